@@ -1,0 +1,137 @@
+//! `statecheck`: simulate, check and draw statechart models written in the `.sc` language.
+//!
+//! The binary is the only place that does I/O: it reads model and scenario files, renders
+//! diagnostics, traces and reports, and maps outcomes to exit codes
+//! (0 ok, 1 model or run-time error, 2 usage error, 4 a property was violated in a run).
+
+mod diag;
+mod load;
+mod output;
+mod sim_cmd;
+
+use anyhow::Result;
+use clap::{Parser, Subcommand};
+use std::process::ExitCode;
+
+/// Statechart simulation, verification and code generation for supervisory controllers.
+#[derive(Parser)]
+#[command(name = "statecheck", version, about, long_about = None)]
+struct Cli {
+    #[command(subcommand)]
+    command: Command,
+}
+
+#[derive(Subcommand)]
+enum Command {
+    /// Parse, type-check and lint a model; exit 1 if it has errors.
+    Check {
+        /// The `.sc` model file.
+        model: String,
+    },
+    /// Print the design-rule findings of a model.
+    Lint {
+        /// The `.sc` model file.
+        model: String,
+        /// Exit 1 when there are warnings.
+        #[arg(long)]
+        deny_warnings: bool,
+    },
+    /// Simulate a system with a scenario or random inputs.
+    Sim(sim_cmd::SimArgs),
+    /// Draw a system's charts as Graphviz DOT, optionally with coverage counts.
+    Dot {
+        /// The `.sc` model file.
+        model: String,
+        /// The system (or chart) to draw.
+        #[arg(long)]
+        system: Option<String>,
+        /// A coverage JSON file written by `statecheck sim --coverage FILE`.
+        #[arg(long)]
+        coverage: Option<String>,
+        /// Write to this file instead of standard output.
+        #[arg(short, long)]
+        output: Option<String>,
+    },
+}
+
+/// An error that maps to a specific exit code after its message was printed.
+#[derive(Debug)]
+pub struct Exit(pub u8);
+
+impl std::fmt::Display for Exit {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(f, "exit {}", self.0)
+    }
+}
+
+impl std::error::Error for Exit {}
+
+fn main() -> ExitCode {
+    let cli = Cli::parse();
+    match run(cli) {
+        Ok(code) => ExitCode::from(code),
+        Err(e) => {
+            if let Some(Exit(code)) = e.downcast_ref::<Exit>() {
+                return ExitCode::from(*code);
+            }
+            if e.downcast_ref::<load::ModelErrors>().is_some() {
+                return ExitCode::from(1);
+            }
+            eprintln!("error: {e:#}");
+            ExitCode::from(2)
+        }
+    }
+}
+
+fn run(cli: Cli) -> Result<u8> {
+    match cli.command {
+        Command::Check { model } => {
+            let loaded = load::load(&model, true)?;
+            for sys in &loaded.model.systems {
+                loaded.lower(sys)?;
+            }
+            let warnings = loaded.diags.iter().filter(|d| !d.is_error()).count();
+            let charts = loaded.model.charts.len();
+            let systems = loaded.model.systems.iter().filter(|s| !s.implicit).count();
+            eprintln!("ok: {model}: {charts} chart(s), {systems} system(s), {warnings} warning(s)");
+            Ok(0)
+        }
+        Command::Lint { model, deny_warnings } => {
+            let loaded = load::load(&model, true)?;
+            let warnings = loaded.diags.iter().filter(|d| !d.is_error()).count();
+            eprintln!("{model}: {warnings} finding(s)");
+            Ok(if deny_warnings && warnings > 0 { 1 } else { 0 })
+        }
+        Command::Sim(args) => sim_cmd::run(args),
+        Command::Dot { model, system, coverage, output } => {
+            let loaded = load::load(&model, false)?;
+            let sys = loaded.system(system.as_deref())?;
+            let program = loaded.lower(sys)?;
+            let counts = match coverage {
+                Some(f) => {
+                    let text = std::fs::read_to_string(&f).map_err(|e| anyhow::anyhow!("cannot read `{f}`: {e}"))?;
+                    let v: serde_json::Value = serde_json::from_str(&text).map_err(|e| anyhow::anyhow!("`{f}` is not JSON: {e}"))?;
+                    Some(output::coverage::from_json(&program, &v).map_err(|e| anyhow::anyhow!("{f}: {e}"))?)
+                }
+                None => None,
+            };
+            let dot = output::dot::render(&loaded.model, &program, counts.as_deref());
+            write_out(output.as_deref(), &dot)?;
+            Ok(0)
+        }
+    }
+}
+
+/// Write to a file, or to standard output when no file is given.
+pub fn write_out(path: Option<&str>, text: &str) -> Result<()> {
+    use std::io::Write;
+    match path {
+        Some(p) => std::fs::write(p, text).map_err(|e| anyhow::anyhow!("cannot write `{p}`: {e}")),
+        None => {
+            let mut out = std::io::stdout().lock();
+            // A closed pipe (e.g. `| head`) is not an error worth reporting.
+            let _ = out.write_all(text.as_bytes());
+            Ok(())
+        }
+    }
+}

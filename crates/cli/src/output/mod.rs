@@ -1,0 +1,10 @@
+//! Renderers of traces, coverage and charts. They read the IR's tick records; none of them
+//! interprets the model.
+
+pub mod coverage;
+pub mod csv;
+pub mod dot;
+pub mod json;
+pub mod table;
+pub mod vcd;
+pub mod view;

@@ -1,0 +1,92 @@
+//! VCD waveforms (IEEE 1364 value change dump) that GTKWave opens: every variable, every
+//! event, and a 1-bit signal per state that is high while the state is active.
+
+use super::view::Views;
+use statecheck_ir::{eval, Program};
+use statecheck_sim::TickRecord;
+use std::fmt::Write;
+
+fn ident(mut n: usize) -> String {
+    let mut s = String::new();
+    loop {
+        s.push((33 + (n % 94)) as u8 as char);
+        n /= 94;
+        if n == 0 {
+            return s;
+        }
+    }
+}
+
+fn vcd_name(s: &str) -> String {
+    s.chars().map(|c| if c.is_ascii_alphanumeric() || c == '_' || c == '.' { c } else { '_' }).collect()
+}
+
+/// Render a trace as VCD; one tick lasts `tick_ms` milliseconds (1 if the model declares none).
+pub fn render(p: &Program, views: &Views, trace: &[TickRecord], tick_ms: i64) -> String {
+    enum Sig {
+        Var { slot: u32, width: u32, is_bool: bool },
+        Event(u32),
+        State(u32),
+    }
+    let mut sigs: Vec<(String, Sig)> = Vec::new();
+    let mut out = String::new();
+    let _ = writeln!(out, "$date statecheck trace $end\n$version statecheck {} $end\n$timescale 1ms $end", env!("CARGO_PKG_VERSION"));
+    for (i, inst) in views.instances.iter().enumerate() {
+        let _ = writeln!(out, "$scope module {} $end", vcd_name(inst));
+        let prefix = format!("{inst}.");
+        for v in views.vars.iter().filter(|v| v.name.starts_with(&prefix)) {
+            let id = ident(sigs.len());
+            let local = vcd_name(&v.name[prefix.len()..]);
+            if v.is_bool {
+                let _ = writeln!(out, "$var wire 1 {id} {local} $end");
+            } else {
+                let _ = writeln!(out, "$var integer 64 {id} {local} $end");
+            }
+            sigs.push((id, Sig::Var { slot: v.slot, width: v.width, is_bool: v.is_bool }));
+        }
+        for (name, slot) in views.events.iter().filter(|(n, _)| n.starts_with(&prefix)) {
+            let id = ident(sigs.len());
+            let _ = writeln!(out, "$var wire 1 {id} {} $end", vcd_name(&name[prefix.len()..]));
+            sigs.push((id, Sig::Event(*slot)));
+        }
+        let _ = writeln!(out, "$scope module states $end");
+        for (path, e, _) in &views.states[i] {
+            let id = ident(sigs.len());
+            let _ = writeln!(out, "$var wire 1 {id} {} $end", vcd_name(path));
+            sigs.push((id, Sig::State(*e)));
+        }
+        let _ = writeln!(out, "$upscope $end\n$upscope $end");
+    }
+    let _ = writeln!(out, "$enddefinitions $end");
+    let mut last: Vec<Option<i64>> = vec![None; sigs.len()];
+    for rec in trace {
+        let mut changes = String::new();
+        for (k, (id, sig)) in sigs.iter().enumerate() {
+            let (v, bit) = match sig {
+                Sig::Var { slot, is_bool, width } => {
+                    let _ = width;
+                    (rec.slots[*slot as usize], *is_bool)
+                }
+                Sig::Event(slot) => (rec.slots[*slot as usize], true),
+                Sig::State(e) => (eval(&p.nodes, &rec.slots, *e).unwrap_or(0), true),
+            };
+            if last[k] == Some(v) {
+                continue;
+            }
+            last[k] = Some(v);
+            if bit {
+                let _ = writeln!(changes, "{}{id}", if v != 0 { 1 } else { 0 });
+            } else {
+                let _ = writeln!(changes, "b{:b} {id}", v);
+            }
+        }
+        if !changes.is_empty() || rec.tick == 0 {
+            let _ = writeln!(out, "#{}", rec.tick as i64 * tick_ms);
+            out.push_str(&changes);
+        }
+    }
+    if let Some(rec) = trace.last() {
+        let _ = writeln!(out, "#{}", (rec.tick as i64 + 1) * tick_ms);
+    }
+    out
+}

@@ -1,0 +1,18 @@
+//! The one IR of statecheck's synchronous step semantics, and its interpreter.
+//!
+//! [`lower`] compiles one system of a checked model into a [`Program`]: a tick as a small
+//! imperative program (assignments, conditionals, switches on active-state slots, calls of
+//! shared entry/exit procedures) over a flat vector of bounded integer slots. All of the
+//! statechart semantics — priorities, exit/entry order, history, timers, events, parallel
+//! regions, run-time checks — is decided in [`lower`](mod@lower); the simulator, the model
+//! checkers and the code generators only execute or translate the program. [`Machine`] is the
+//! reference interpreter.
+
+mod interp;
+mod layout;
+pub mod lower;
+mod program;
+
+pub use interp::{eval, Machine, RuntimeError, RuntimeErrorKind};
+pub use lower::lower;
+pub use program::*;

@@ -1,0 +1,260 @@
+//! The checked model of a `.sc` file.
+//!
+//! This crate turns the parser's AST into a [`Model`]: names resolved, expressions typed with
+//! integer bounds, function calls inlined, the state hierarchy built, transitions resolved to
+//! their targets, systems flattened (instance arrays expanded, connections and execution order
+//! fixed) — and it reports every problem as a [`Diagnostic`] with a stable code, continuing
+//! past errors so one run shows them all. Design-rule checks (the Modelica paper's §3.1) live in
+//! [`lint`]. It decides nothing about *how* a step executes: that is the `ir` crate's job.
+
+mod chart;
+mod expr;
+pub mod lint;
+pub mod model;
+pub mod ops;
+mod property;
+mod rebase;
+mod scope;
+mod suggest;
+mod system;
+pub mod types;
+
+pub use model::*;
+pub use types::{EnumId, Type};
+
+use expr::{ExprChecker, Sink};
+use scope::{Globals, Scope};
+use statecheck_base::{Diagnostic, Span};
+use statecheck_syntax::ast;
+use std::collections::HashMap;
+
+/// Check a parsed file. Always returns a model (possibly incomplete) and all diagnostics,
+/// including design-rule warnings; the model is usable only if no diagnostic is an error.
+pub fn check(file: &ast::File) -> (Model, Vec<Diagnostic>) {
+    let mut globals = Globals::default();
+    let mut early = Vec::new();
+    collect_globals(file, &mut globals, &mut early);
+    check_consts_and_fns(file, &mut globals, &mut early);
+    let globals_ref = &globals;
+    let consts_snapshot = globals_ref.const_order.clone();
+    let mut ck = ExprChecker {
+        globals: globals_ref,
+        sink: Sink {
+            diags: early,
+            muted: 0,
+        },
+    };
+
+    // Charts: hierarchy first (so `in()` can see every state), then actions and transitions.
+    let chart_asts: Vec<&ast::Chart> = file
+        .items
+        .iter()
+        .filter_map(|i| match i {
+            ast::Item::Chart(c) => Some(c),
+            _ => None,
+        })
+        .collect();
+    let skeletons: Vec<_> = chart_asts
+        .iter()
+        .map(|c| chart::skeleton(&mut ck, c, model::ChartRole::Normal))
+        .collect();
+    let mut charts: Vec<Chart> = Vec::new();
+    for (sk, c) in skeletons.into_iter().zip(&chart_asts) {
+        let filled = chart::fill(&mut ck, sk, c, None, &[]);
+        charts.push(filled);
+    }
+
+    let mut systems = Vec::new();
+    let mut system_names: HashMap<String, Span> = HashMap::new();
+    for item in &file.items {
+        if let ast::Item::System(s) = item {
+            if let Some(prev) = system_names.insert(s.name.name.clone(), s.name.span) {
+                ck.sink.push(
+                    Diagnostic::error("E0102", format!("system `{}` is declared twice", s.name.name), s.name.span)
+                        .with_secondary(prev, "first declared here"),
+                );
+                continue;
+            }
+            systems.push(system::check_system(&mut ck, s, &mut charts));
+        }
+    }
+    // Every top-level chart can also run alone, as a system of one instance named like it.
+    for (id, c) in chart_asts.iter().enumerate() {
+        if system_names.contains_key(&c.name.name) {
+            continue;
+        }
+        let mut properties = charts[id].properties.clone();
+        for p in &mut properties {
+            rebase::property(p, 0);
+        }
+        systems.push(System {
+            name: c.name.name.clone(),
+            implicit: true,
+            instances: vec![Instance {
+                name: c.name.name.clone(),
+                chart: id as ChartId,
+                span: c.name.span,
+            }],
+            connections: Vec::new(),
+            order: vec![0],
+            assumes: Vec::new(),
+            properties,
+            span: c.name.span,
+        });
+    }
+
+    let model = Model {
+        enums: globals_ref.enums.clone(),
+        consts: consts_snapshot
+            .iter()
+            .filter_map(|n| {
+                globals_ref.consts.get(n).map(|(ty, v, _)| ConstDef {
+                    name: n.clone(),
+                    ty: *ty,
+                    value: *v,
+                })
+            })
+            .collect(),
+        charts,
+        systems,
+        tick_ms: globals_ref.tick_ms,
+    };
+    let mut diags = ck.sink.diags;
+    if !diags.iter().any(Diagnostic::is_error) {
+        diags.extend(lint::lint(&model));
+    }
+    diags.sort_by_key(|d| (d.span.start, d.span.end));
+    (model, diags)
+}
+
+fn collect_globals(file: &ast::File, g: &mut Globals, diags: &mut Vec<Diagnostic>) {
+    let mut names: HashMap<String, Span> = HashMap::new();
+    let mut declare = |name: &ast::Ident, diags: &mut Vec<Diagnostic>| -> bool {
+        if let Some(prev) = names.insert(name.name.clone(), name.span) {
+            diags.push(
+                Diagnostic::error("E0102", format!("`{}` is declared twice", name.name), name.span)
+                    .with_label("second declaration")
+                    .with_secondary(prev, "first declared here"),
+            );
+            return false;
+        }
+        true
+    };
+    let mut chart_count = 0;
+    let mut tick_seen: Option<Span> = None;
+    for item in &file.items {
+        match item {
+            ast::Item::Enum(e) => {
+                if !declare(&e.name, diags) {
+                    continue;
+                }
+                let id = g.enums.len() as EnumId;
+                let mut seen: HashMap<&str, Span> = HashMap::new();
+                for v in &e.variants {
+                    if let Some(prev) = seen.insert(&v.name, v.span) {
+                        diags.push(
+                            Diagnostic::error("E0102", format!("literal `{}` is declared twice", v.name), v.span)
+                                .with_secondary(prev, "first declared here"),
+                        );
+                    }
+                    g.literal_owners.entry(v.name.clone()).or_default().push(id);
+                }
+                if e.variants.is_empty() {
+                    diags.push(Diagnostic::error("E0114", format!("enum `{}` has no literals", e.name.name), e.name.span));
+                }
+                g.enum_ids.insert(e.name.name.clone(), id);
+                g.enums.push(EnumDef {
+                    name: e.name.name.clone(),
+                    variants: if e.variants.is_empty() { vec!["_".into()] } else { e.variants.iter().map(|v| v.name.clone()).collect() },
+                });
+            }
+            ast::Item::Chart(c) => {
+                if declare(&c.name, diags) {
+                    g.chart_ids.insert(c.name.name.clone(), chart_count);
+                }
+                chart_count += 1;
+            }
+            ast::Item::Const(c) => {
+                declare(&c.name, diags);
+            }
+            ast::Item::Fn(f) => {
+                declare(&f.name, diags);
+            }
+            ast::Item::System(_) => {}
+            ast::Item::Tick(t) => {
+                if let Some(prev) = tick_seen {
+                    diags.push(Diagnostic::error("E0108", "the tick length is declared twice", t.span).with_secondary(prev, "first declared here"));
+                }
+                tick_seen = Some(t.span);
+            }
+        }
+    }
+}
+
+fn check_consts_and_fns(file: &ast::File, g: &mut Globals, diags: &mut Vec<Diagnostic>) {
+    // Constants and functions are checked in textual order; each sees only earlier ones.
+    for item in &file.items {
+        let view = g.clone();
+        let mut sub = ExprChecker {
+            globals: &view,
+            sink: Sink { diags: Vec::new(), muted: 0 },
+        };
+        let empty = Scope { chart: None, instances: None, charts: &[], locals: Vec::new(), fn_limit: usize::MAX };
+        match item {
+            ast::Item::Const(c) => {
+                let x = sub.check(&empty, &c.value);
+                let ty = match &c.ty {
+                    Some(t) => sub.resolve_type(t),
+                    None => x.ty,
+                };
+                let x = sub.coerce(x, ty, "constant");
+                let value = match x.kind {
+                    ExprKind::Const(v) => v,
+                    _ => {
+                        sub.sink.push(Diagnostic::error("E0105", "a constant needs a constant value", c.value.span()).with_label("depends on variables"));
+                        0
+                    }
+                };
+                let ty = if ty.is_int() { Type::UNBOUNDED } else { ty };
+                g.consts.insert(c.name.name.clone(), (ty, value, c.name.span));
+                g.const_order.push(c.name.name.clone());
+            }
+            ast::Item::Fn(f) => {
+                let index = g.fns.len();
+                // Check the body once with opaque parameters, to report its errors here.
+                let mut scope = Scope { chart: None, instances: None, charts: &[], locals: Vec::new(), fn_limit: index };
+                for (i, p) in f.params.iter().enumerate() {
+                    let ty = sub.resolve_type(&p.ty);
+                    scope.locals.push((
+                        p.name.name.clone(),
+                        Expr { kind: ExprKind::Var(VarRef { instance: Some(u32::MAX), var: i as VarId }), ty, span: p.name.span },
+                    ));
+                }
+                for (name, e) in &f.lets {
+                    let v = sub.check(&scope, e);
+                    scope.locals.push((name.name.clone(), v));
+                }
+                let body = sub.check(&scope, &f.body);
+                let rty = sub.resolve_type(&f.ret);
+                let _ = sub.coerce(body, rty, "function result");
+                g.fns.insert(f.name.name.clone(), (index, f.clone()));
+            }
+            ast::Item::Tick(t) => {
+                if let Some(v) = sub.const_value(&empty, &t.duration.amount) {
+                    let ms = match t.duration.unit {
+                        ast::TimeUnit::Ms => v,
+                        ast::TimeUnit::S => v.saturating_mul(1000),
+                        ast::TimeUnit::Min => v.saturating_mul(60_000),
+                    };
+                    if ms <= 0 {
+                        sub.sink.push(Diagnostic::error("E0104", "the tick length must be positive", t.span));
+                    } else {
+                        g.tick_ms = Some(ms);
+                    }
+                }
+            }
+            _ => {}
+        }
+        diags.extend(sub.sink.diags);
+    }
+}

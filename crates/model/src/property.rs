@@ -1,0 +1,56 @@
+//! Checking property declarations (invariant, reachable, respond).
+
+use crate::expr::ExprChecker;
+use crate::model::{Property, PropertyKind};
+use crate::scope::Scope;
+use statecheck_base::Diagnostic;
+use statecheck_syntax::ast;
+
+/// Check a list of properties in a scope.
+pub(crate) fn check_properties(
+    ck: &mut ExprChecker,
+    scope: &Scope,
+    props: &[ast::Property],
+) -> Vec<Property> {
+    props
+        .iter()
+        .map(|p| {
+            let kind = match &p.kind {
+                ast::PropertyKind::Invariant { expr, assuming } => PropertyKind::Invariant {
+                    expr: ck.check_bool(scope, expr),
+                    assuming: assuming.as_ref().map(|a| ck.check_bool(scope, a)),
+                },
+                ast::PropertyKind::Reachable { expr } => PropertyKind::Reachable {
+                    expr: ck.check_bool(scope, expr),
+                },
+                ast::PropertyKind::Respond {
+                    trigger,
+                    response,
+                    within,
+                } => {
+                    let n = ck.const_value(scope, within).unwrap_or(0);
+                    if !(0..=1_000_000).contains(&n) {
+                        ck.sink.push(
+                            Diagnostic::error(
+                                "E0104",
+                                format!("`within {n}` must be between 0 and 1000000 ticks"),
+                                within.span(),
+                            )
+                            .with_label("out of range"),
+                        );
+                    }
+                    PropertyKind::Respond {
+                        trigger: ck.check_bool(scope, trigger),
+                        response: ck.check_bool(scope, response),
+                        within: n.clamp(0, 1_000_000),
+                    }
+                }
+            };
+            Property {
+                name: p.name.name.clone(),
+                kind,
+                span: p.name.span,
+            }
+        })
+        .collect()
+}

@@ -1,0 +1,12 @@
+//! Simulation on the IR: scenarios in and out, deterministic and random runs, property
+//! monitoring along every run, and coverage counts.
+//!
+//! Nothing here decides what a tick does: runs drive [`statecheck_ir::Machine`]. The crate does
+//! no I/O; the CLI reads scenario files and renders traces.
+
+pub mod random;
+pub mod run;
+pub mod scenario;
+
+pub use run::{run, InputSource, Options, Run, ScenarioInputs, Stop, TickRecord};
+pub use scenario::{Scenario, ScenarioError};

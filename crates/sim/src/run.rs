@@ -1,0 +1,173 @@
+//! Running a program: scenario-driven or random inputs, with the model's properties monitored
+//! on every tick.
+
+use crate::scenario::Scenario;
+use statecheck_ir::{Machine, Program, PropertyKind, RuntimeError};
+
+/// One tick of a trace: every slot's value right after the tick (state, the tick's inputs and
+/// its temporaries such as present local events).
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct TickRecord {
+    /// Tick number, from 0.
+    pub tick: u64,
+    /// All slot values after the tick.
+    pub slots: Vec<i64>,
+}
+
+/// Why a run ended.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum Stop {
+    /// All ticks ran.
+    Completed,
+    /// A run-time error stopped the tick (the trace ends with the tick before).
+    RuntimeError {
+        /// The tick that failed.
+        tick: u64,
+        /// The error.
+        error: RuntimeError,
+    },
+    /// A property was violated after the tick (the trace includes the tick).
+    Violation {
+        /// The tick after which it was violated.
+        tick: u64,
+        /// The property's name.
+        property: String,
+    },
+    /// The inputs of a tick violated an `assume`.
+    AssumeViolated {
+        /// The tick.
+        tick: u64,
+        /// Index into `Program::assumes`.
+        assume: usize,
+    },
+}
+
+/// A finished run.
+#[derive(Clone, Debug)]
+pub struct Run {
+    /// The ticks that completed.
+    pub trace: Vec<TickRecord>,
+    /// Why it ended.
+    pub stop: Stop,
+    /// For each `reachable` property: the first tick at which it held.
+    pub reached: Vec<(String, Option<u64>)>,
+    /// Coverage counters, if requested.
+    pub coverage: Option<Vec<u64>>,
+    /// The inputs applied, one full vector per tick (for `--save-scenario`).
+    pub inputs: Vec<Vec<i64>>,
+}
+
+/// Options of a run.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct Options {
+    /// Count state entries and transition firings.
+    pub coverage: bool,
+    /// Do not record the trace (for long random runs that only want coverage or checks).
+    pub no_trace: bool,
+}
+
+/// Where a run gets its inputs from.
+pub trait InputSource {
+    /// Fill `inputs` (in `Program::inputs` order) for `tick`; the machine holds the state
+    /// before the tick. Return false when the run is over.
+    fn next(&mut self, tick: u64, machine: &Machine, inputs: &mut [i64]) -> Result<bool, usize>;
+}
+
+/// Inputs from a scenario: held inputs keep their value, events last one tick.
+pub struct ScenarioInputs<'s> {
+    scenario: &'s Scenario,
+}
+
+impl<'s> ScenarioInputs<'s> {
+    /// Inputs replaying `scenario`.
+    pub fn new(scenario: &'s Scenario) -> Self {
+        ScenarioInputs { scenario }
+    }
+}
+
+impl InputSource for ScenarioInputs<'_> {
+    fn next(&mut self, tick: u64, machine: &Machine, inputs: &mut [i64]) -> Result<bool, usize> {
+        let Some(changes) = self.scenario.ticks.get(tick as usize) else { return Ok(false) };
+        let p = machine.program();
+        for (k, inp) in p.inputs.iter().enumerate() {
+            if inp.is_event {
+                inputs[k] = 0;
+            }
+        }
+        for &(k, v) in changes {
+            inputs[k] = v;
+        }
+        Ok(true)
+    }
+}
+
+/// Run `program` from its initial state with inputs from `source`.
+pub fn run(program: &Program, source: &mut dyn InputSource, opts: Options) -> Run {
+    let mut m = Machine::new(program);
+    if opts.coverage {
+        m.enable_coverage();
+    }
+    let mut inputs: Vec<i64> = program.inputs.iter().map(|i| program.slots[i.slot as usize].init).collect();
+    let mut trace = Vec::new();
+    let mut all_inputs = Vec::new();
+    let mut reached: Vec<(String, Option<u64>)> = program
+        .properties
+        .iter()
+        .filter(|p| matches!(p.kind, PropertyKind::Reachable { .. }))
+        .map(|p| (p.name.clone(), None))
+        .collect();
+    let mut tick = 0u64;
+    let stop = loop {
+        match source.next(tick, &m, &mut inputs) {
+            Ok(true) => {}
+            Ok(false) => break Stop::Completed,
+            Err(assume) => break Stop::AssumeViolated { tick, assume },
+        }
+        for (k, inp) in program.inputs.iter().enumerate() {
+            m.set(inp.slot, inputs[k]);
+        }
+        if let Some(a) = program.assumes.iter().position(|a| m.eval(*a).map_or(true, |v| v == 0)) {
+            break Stop::AssumeViolated { tick, assume: a };
+        }
+        all_inputs.push(inputs.clone());
+        if let Err(error) = m.step() {
+            break Stop::RuntimeError { tick, error };
+        }
+        if !opts.no_trace {
+            trace.push(TickRecord { tick, slots: m.slots().to_vec() });
+        }
+        if let Some(name) = first_violation(program, &m, tick, &mut reached) {
+            break Stop::Violation { tick, property: name };
+        }
+        tick += 1;
+    };
+    Run { trace, stop, reached, coverage: m.coverage().map(<[u64]>::to_vec), inputs: all_inputs }
+}
+
+/// The first property (in declaration order) that the machine's current state violates;
+/// records `reachable` properties that now hold.
+fn first_violation(p: &Program, m: &Machine, tick: u64, reached: &mut [(String, Option<u64>)]) -> Option<String> {
+    let holds = |e| m.eval(e).map_or(false, |v| v != 0);
+    let mut r = 0;
+    for prop in &p.properties {
+        match &prop.kind {
+            PropertyKind::Invariant { expr, assuming } => {
+                if assuming.map_or(true, holds) && !holds(*expr) {
+                    return Some(prop.name.clone());
+                }
+            }
+            PropertyKind::Reachable { expr } => {
+                if reached[r].1.is_none() && holds(*expr) {
+                    reached[r].1 = Some(tick);
+                }
+                r += 1;
+            }
+            PropertyKind::Respond { ok, .. } | PropertyKind::Observer { ok, .. } => {
+                if !holds(*ok) {
+                    return Some(prop.name.clone());
+                }
+            }
+        }
+    }
+    None
+}

@@ -1,0 +1,234 @@
+//! The scenario format: the inputs of a run, one line per tick.
+//!
+//! ```text
+//! # comments start with '#'
+//! fam.runMode = NORMAL_RUN, fam.targetPos = 100   # set inputs; they hold until changed
+//! -  * 20                                         # 20 ticks with no changes
+//! fam.stallNow = true, request                    # a bare name makes an input event present
+//! ```
+//! A line is a tick: a comma-separated list of `input = value` and event names, or `-` for no
+//! change. `* N` at the end of a line repeats it N times (events are present in every repeat).
+//! Names may omit the instance (`runMode`) when that is unambiguous. The same format is what
+//! `--save-scenario` and the model checkers' counterexamples write.
+
+use statecheck_ir::Program;
+
+/// The inputs of a run: for each tick, the inputs that change (and the events present).
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct Scenario {
+    /// For each tick, `(index into Program::inputs, value)` pairs.
+    pub ticks: Vec<Vec<(usize, i64)>>,
+}
+
+/// A problem in a scenario file.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct ScenarioError {
+    /// 1-based line.
+    pub line: usize,
+    /// 1-based column.
+    pub col: usize,
+    /// Length of the offending text (for underlining).
+    pub len: usize,
+    /// What is wrong.
+    pub message: String,
+    /// How to fix it.
+    pub hint: Option<String>,
+}
+
+/// Most ticks a scenario may expand to (a guard against `* 999999999999`).
+pub const MAX_TICKS: usize = 100_000_000;
+
+/// Parse a scenario for a program. Collects every error rather than stopping at the first.
+pub fn parse(text: &str, program: &Program) -> Result<Scenario, Vec<ScenarioError>> {
+    let mut ticks = Vec::new();
+    let mut errors = Vec::new();
+    for (ln, raw) in text.lines().enumerate() {
+        let line_no = ln + 1;
+        let content = raw.split('#').next().unwrap_or("");
+        if content.trim().is_empty() {
+            continue;
+        }
+        let err = |col: usize, len: usize, message: String, hint: Option<String>| ScenarioError { line: line_no, col: col + 1, len: len.max(1), message, hint };
+        // `* N` repeat suffix.
+        let (body, repeat) = match content.rfind('*') {
+            Some(star) => {
+                let n_text = content[star + 1..].trim();
+                match n_text.parse::<usize>() {
+                    Ok(n) if n >= 1 => (&content[..star], n),
+                    _ => {
+                        errors.push(err(star, content.len() - star, format!("bad repeat count `{n_text}`"), Some("write `* N` with N ≥ 1 at the end of the line".into())));
+                        continue;
+                    }
+                }
+            }
+            None => (content, 1),
+        };
+        let mut changes: Vec<(usize, i64)> = Vec::new();
+        let trimmed = body.trim();
+        if trimmed != "-" {
+            let mut offset = 0;
+            for item in body.split(',') {
+                let start = offset + (item.len() - item.trim_start().len());
+                offset += item.len() + 1;
+                let item_t = item.trim();
+                if item_t.is_empty() {
+                    errors.push(err(start, 1, "empty item".into(), Some("items are separated by single commas".into())));
+                    continue;
+                }
+                let (name, value) = match item_t.split_once('=') {
+                    Some((n, v)) => (n.trim(), Some(v.trim())),
+                    None => (item_t, None),
+                };
+                let idx = match resolve(program, name) {
+                    Ok(i) => i,
+                    Err((msg, hint)) => {
+                        errors.push(err(start, name.len(), msg, hint));
+                        continue;
+                    }
+                };
+                let input = &program.inputs[idx];
+                let slot = &program.slots[input.slot as usize];
+                let v = match (value, input.is_event) {
+                    (None, true) => 1,
+                    (Some(v), true) => match v {
+                        "true" | "1" => 1,
+                        "false" | "0" => 0,
+                        _ => {
+                            errors.push(err(start, item_t.len(), format!("event `{}` is present or absent, not `{v}`", input.name), Some(format!("write just `{name}` to make it present", ))));
+                            continue;
+                        }
+                    },
+                    (None, false) => {
+                        errors.push(err(start, name.len(), format!("`{}` is not an event; give it a value", input.name), Some(format!("write `{name} = <value>`"))));
+                        continue;
+                    }
+                    (Some(v), false) => match slot.display.parse(v) {
+                        Some(x) if x >= slot.lo && x <= slot.hi => x,
+                        Some(x) => {
+                            errors.push(err(start, item_t.len(), format!("{x} is out of range {}..{} for `{}`", slot.lo, slot.hi, input.name), None));
+                            continue;
+                        }
+                        None => {
+                            let hint = match &slot.display {
+                                statecheck_ir::ValueKind::Enum(names) => format!("one of: {}", names.join(", ")),
+                                statecheck_ir::ValueKind::Bool => "`true` or `false`".into(),
+                                statecheck_ir::ValueKind::Int => "an integer".into(),
+                            };
+                            errors.push(err(start, item_t.len(), format!("`{v}` is not a value of `{}`", input.name), Some(hint)));
+                            continue;
+                        }
+                    },
+                };
+                changes.push((idx, v));
+            }
+        }
+        if ticks.len().saturating_add(repeat) > MAX_TICKS {
+            errors.push(err(0, content.len(), format!("the scenario would exceed {MAX_TICKS} ticks"), None));
+            break;
+        }
+        for _ in 0..repeat {
+            ticks.push(changes.clone());
+        }
+    }
+    if errors.is_empty() {
+        Ok(Scenario { ticks })
+    } else {
+        Err(errors)
+    }
+}
+
+/// Find an input by `instance.var` or by an unambiguous bare `var`.
+fn resolve(program: &Program, name: &str) -> Result<usize, (String, Option<String>)> {
+    if let Some(i) = program.inputs.iter().position(|inp| inp.name == name) {
+        return Ok(i);
+    }
+    let matches: Vec<usize> = program
+        .inputs
+        .iter()
+        .enumerate()
+        .filter(|(_, inp)| inp.name.rsplit('.').next() == Some(name))
+        .map(|(i, _)| i)
+        .collect();
+    match matches.as_slice() {
+        [i] => Ok(*i),
+        [] => {
+            let known: Vec<&str> = program.inputs.iter().map(|i| i.name.as_str()).collect();
+            let is_var = program.slots.iter().any(|s| s.name == name || s.name.rsplit('.').next() == Some(name));
+            let hint = if is_var {
+                Some(format!("`{name}` is not a free input (it is computed or connected); the free inputs are: {}", known.join(", ")))
+            } else if known.is_empty() {
+                Some("this system has no free inputs".into())
+            } else {
+                Some(format!("the free inputs are: {}", known.join(", ")))
+            };
+            Err((format!("unknown input `{name}`"), hint))
+        }
+        many => Err((
+            format!("`{name}` is ambiguous"),
+            Some(format!("qualify it: {}", many.iter().map(|i| program.inputs[*i].name.as_str()).collect::<Vec<_>>().join(" or "))),
+        )),
+    }
+}
+
+/// Write a scenario in the canonical format: qualified names, held inputs written only when
+/// they change, identical consecutive lines folded into `* N`.
+pub fn format(s: &Scenario, program: &Program) -> String {
+    let mut out = String::from("# statecheck scenario: one line per tick; `name = value` holds, bare names are events\n");
+    let mut lines: Vec<String> = Vec::with_capacity(s.ticks.len());
+    for tick in &s.ticks {
+        let items: Vec<String> = tick
+            .iter()
+            .map(|(i, v)| {
+                let inp = &program.inputs[*i];
+                if inp.is_event {
+                    inp.name.clone()
+                } else {
+                    format!("{} = {}", inp.name, program.slots[inp.slot as usize].display.format(*v))
+                }
+            })
+            .collect();
+        lines.push(if items.is_empty() { "-".into() } else { items.join(", ") });
+    }
+    let mut i = 0;
+    while i < lines.len() {
+        let mut j = i + 1;
+        // Only fold lines that are pure repeats: event lines, or `-`.
+        let foldable = lines[i] == "-" || s.ticks[i].iter().all(|(k, _)| program.inputs[*k].is_event);
+        while foldable && j < lines.len() && lines[j] == lines[i] {
+            j += 1;
+        }
+        if j - i > 1 {
+            out.push_str(&format!("{} * {}\n", lines[i], j - i));
+        } else {
+            out.push_str(&lines[i]);
+            out.push('\n');
+        }
+        i = j;
+    }
+    out
+}
+
+/// Build a scenario from full input vectors (one per tick, in `Program::inputs` order),
+/// keeping only the changes of held inputs and the present events.
+pub fn from_input_vectors(program: &Program, vectors: &[Vec<i64>]) -> Scenario {
+    let mut held: Vec<i64> = program.inputs.iter().map(|i| program.slots[i.slot as usize].init).collect();
+    let ticks = vectors
+        .iter()
+        .map(|vec| {
+            let mut changes = Vec::new();
+            for (k, inp) in program.inputs.iter().enumerate() {
+                let v = vec[k];
+                if inp.is_event {
+                    if v != 0 {
+                        changes.push((k, 1));
+                    }
+                } else if v != held[k] {
+                    held[k] = v;
+                    changes.push((k, v));
+                }
+            }
+            changes
+        })
+        .collect();
+    Scenario { ticks }
+}

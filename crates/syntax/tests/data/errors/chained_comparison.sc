@@ -1,0 +1,3 @@
+const A = 0 < x < 10;
+const B = a == b == c;
+const C = 0 < x && x < 10;

@@ -1,0 +1,5 @@
+chart C {
+  initial S;
+  state S {
+    entry {
+      n = 1;

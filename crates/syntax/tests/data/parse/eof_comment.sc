@@ -1,0 +1,2 @@
+const X = 1;
+// comment at EOF with no newline

@@ -1,0 +1,23 @@
+// Precedence, loosest first: if, ||, &&, comparisons, |, ^, &, shifts, + -, * / %, unary.
+const P1 = a || b && c;
+const P2 = a && b == c;
+const P3 = a == b | c;
+const P4 = a | b ^ c;
+const P5 = a ^ b & c;
+const P6 = a & b << c;
+const P7 = a << b + c;
+const P8 = a + b * c;
+const P9 = -a * !b % ~c;
+const P10 = a - b - c + d;
+const P11 = a / b / c;
+const P12 = a >> 1 >> 2;
+const P13 = (a + b) * c;
+const P14 = if a then b else c;
+const P15 = if a then if b then 1 else 2 else x || y;
+const P16 = ((((1))));
+const P17 = - - 3;
+const CMP = a != b && a < b && a <= b && a > b && a >= b;
+const CALLS = min(a, max(b, 3)) + abs(-4) + f();
+const PATHS = c.x + fam[0].move.speed + fam[N - 1].y + Color.RED;
+const INS = in(c.Go.Pause) && !in(fam[2].Idle);
+const LITS = 0 + 4_095 + 0x7ff + 0XFF + 0b1010 + 9223372036854775807 + true + false;
