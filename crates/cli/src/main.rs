@@ -8,6 +8,7 @@ mod diag;
 mod load;
 mod output;
 mod sim_cmd;
+mod verify_cmd;
 
 use anyhow::Result;
 use clap::{Parser, Subcommand};
@@ -38,6 +39,8 @@ enum Command {
     },
     /// Simulate a system with a scenario or random inputs.
     Sim(sim_cmd::SimArgs),
+    /// Verify a system's properties exhaustively.
+    Verify(verify_cmd::VerifyArgs),
     /// Draw a system's charts as Graphviz DOT, optionally with coverage counts.
     Dot {
         /// The `.sc` model file.
@@ -103,6 +106,7 @@ fn run(cli: Cli) -> Result<u8> {
             Ok(if deny_warnings && warnings > 0 { 1 } else { 0 })
         }
         Command::Sim(args) => sim_cmd::run(args),
+        Command::Verify(args) => verify_cmd::run(args),
         Command::Dot { model, system, coverage, output } => {
             let loaded = load::load(&model, false)?;
             let sys = loaded.system(system.as_deref())?;
