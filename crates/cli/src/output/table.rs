@@ -35,7 +35,8 @@ pub fn render(p: &Program, views: &Views, trace: &[TickRecord]) -> String {
     let mut out = String::new();
     let _ = writeln!(out, "{:>w0$}  {:<w1$}  changes", "tick", "active");
     for (t, a, c) in rows {
-        let _ = writeln!(out, "{t:>w0$}  {a:<w1$}  {c}");
+        let line = format!("{t:>w0$}  {a:<w1$}  {c}");
+        let _ = writeln!(out, "{}", line.trim_end());
     }
     out
 }
