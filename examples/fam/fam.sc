@@ -328,3 +328,80 @@ system FamAlone {
   invariant fam_actualpos_in_range:
     fam.actualPos >= 0 && fam.actualPos <= 4095;
 }
+
+// ---------------------------------------------------------------------------------------
+// The same properties in a narrower environment, small enough for the explicit-state engine:
+// FamAlone has 8 * 2 * 4096 * 2^9 = 33.5 million input vectors per tick. Here an environment
+// chart feeds the FAM's target and fault inputs from two small free inputs, so a tick has
+// 8 (runMode) * 2 (swap) * 2 (far) * 10 (fault) = 320 input vectors. This under-approximates
+// FamAlone: a violation or witness found here is one of FamAlone too, while `proved` here
+// means proved for this environment only:
+//  - two targets, 2050 and 2075, on the same side of 0x800 as the start position 2048, so
+//    every move is short (Table C.4 gives the same direction with or without swap) and
+//    positions stay in 2048..2075; the 25-position move still exercises the 20-position
+//    short-move rule of Table C.7 both ways;
+//  - at most one environment fault per tick, and a cause (HSL, OTF, CCF) lasts one tick at a
+//    time unless the environment picks it again.
+// The `swap_across_zero` scenario covers the full position range instead.
+enum Fault { NONE, STALL, HSL_F, EPM_F, OTF_F, COF_F, FBF_F, CCF_F, POWER_LOSS, POWER_LOSS_NO_SAVE }
+
+plant chart FamEnv {
+  input fault: Fault = NONE;
+  input far: bool = false;
+  output targetPos: int[0..4095] = 2050;
+  output stallNow: bool = false;
+  output hslFault: bool = false;
+  output epmFault: bool = false;
+  output otFault: bool = false;
+  output cofNow: bool = false;
+  output fbfFault: bool = false;
+  output ccfFault: bool = false;
+  output powerLoss: bool = false;
+  output saveFails: bool = false;
+  initial env;
+  state env {
+    during {
+      targetPos = if far then 2075 else 2050;
+      stallNow = fault == STALL;
+      hslFault = fault == HSL_F;
+      epmFault = fault == EPM_F;
+      otFault = fault == OTF_F;
+      cofNow = fault == COF_F;
+      fbfFault = fault == FBF_F;
+      ccfFault = fault == CCF_F;
+      powerLoss = fault == POWER_LOSS || fault == POWER_LOSS_NO_SAVE;
+      saveFails = fault == POWER_LOSS_NO_SAVE;
+    }
+  }
+}
+
+system FamAloneSmall {
+  instance env: FamEnv;
+  instance fam: Fam;
+  connect env.targetPos -> fam.targetPos;
+  connect env.stallNow -> fam.stallNow;
+  connect env.hslFault -> fam.hslFault;
+  connect env.epmFault -> fam.epmFault;
+  connect env.otFault -> fam.otFault;
+  connect env.cofNow -> fam.cofNow;
+  connect env.fbfFault -> fam.fbfFault;
+  connect env.ccfFault -> fam.ccfFault;
+  connect env.powerLoss -> fam.powerLoss;
+  connect env.saveFails -> fam.saveFails;
+  order env, fam;
+
+  reachable fam_stall_running_possible:
+    in(fam.stallHandler.stallMode) && in(fam.moveHandler.running);
+  invariant fam_stall_blocks_run:
+    !(in(fam.stallHandler.stallMode) && in(fam.moveHandler.running))
+    assuming fam.runMode != FAILURE_RUN;
+  reachable fam_failure_running_possible:
+    in(fam.failureHandler.failure) && in(fam.moveHandler.running);
+  invariant fam_failure_blocks_run:
+    !(in(fam.failureHandler.failure) && in(fam.moveHandler.running))
+    assuming fam.runMode != FAILURE_RUN;
+  invariant fam_cof_with_notcalib:
+    !(fam.notCalib && fam.failureReg == COF);
+  invariant fam_actualpos_in_range:
+    fam.actualPos >= 0 && fam.actualPos <= 4095;
+}

@@ -17,21 +17,39 @@ pub fn render(path: &str, source: &str, diags: &[Diagnostic], color: bool) -> St
         let range = clamp(d.span.range(), source.len());
         let (line, col) = idx.line_col(range.start as u32);
         let mut b = Report::build(kind, (path.to_string(), range.clone()))
-            .with_config(Config::default().with_color(color).with_index_type(IndexType::Byte))
+            .with_config(
+                Config::default()
+                    .with_color(color)
+                    .with_index_type(IndexType::Byte),
+            )
             .with_code(d.code)
             .with_message(format!("{} ({path}:{line}:{col})", d.message))
             .with_label(
                 Label::new((path.to_string(), range))
-                    .with_message(if d.label.is_empty() { "here".to_string() } else { d.label.clone() })
-                    .with_color(if d.is_error() { Color::Red } else { Color::Yellow }),
+                    .with_message(if d.label.is_empty() {
+                        "here".to_string()
+                    } else {
+                        d.label.clone()
+                    })
+                    .with_color(if d.is_error() {
+                        Color::Red
+                    } else {
+                        Color::Yellow
+                    }),
             );
         for l in &d.secondary {
-            b = b.with_label(Label::new((path.to_string(), clamp(l.span.range(), source.len()))).with_message(&l.message).with_color(Color::Blue));
+            b = b.with_label(
+                Label::new((path.to_string(), clamp(l.span.range(), source.len())))
+                    .with_message(&l.message)
+                    .with_color(Color::Blue),
+            );
         }
         if let Some(h) = &d.hint {
             b = b.with_help(h);
         }
-        let _ = b.finish().write((path.to_string(), Source::from(source)), &mut out);
+        let _ = b
+            .finish()
+            .write((path.to_string(), Source::from(source)), &mut out);
     }
     String::from_utf8_lossy(&out).into_owned()
 }

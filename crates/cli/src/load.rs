@@ -38,18 +38,32 @@ pub fn load(path: &str, show_warnings: bool) -> Result<Loaded> {
         // Still check what parsed, to report name and type errors in the same run, but drop
         // diagnostics that may be consequences of the syntax errors' recovery.
         let (m, more) = statecheck_model::check(&file);
-        (m, more.into_iter().filter(|d| d.is_error() && d.code != "E0101").collect::<Vec<_>>())
+        (
+            m,
+            more.into_iter()
+                .filter(|d| d.is_error() && d.code != "E0101")
+                .collect::<Vec<_>>(),
+        )
     } else {
         statecheck_model::check(&file)
     };
     diags.extend(more);
     diags.sort_by_key(|d| (d.span.start, d.span.end));
-    let shown: Vec<Diagnostic> = diags.iter().filter(|d| show_warnings || d.is_error()).cloned().collect();
+    let shown: Vec<Diagnostic> = diags
+        .iter()
+        .filter(|d| show_warnings || d.is_error())
+        .cloned()
+        .collect();
     diag::eprint(path, &source, &shown);
     if diags.iter().any(Diagnostic::is_error) {
         return Err(ModelErrors.into());
     }
-    Ok(Loaded { path: path.to_string(), source, model, diags })
+    Ok(Loaded {
+        path: path.to_string(),
+        source,
+        model,
+        diags,
+    })
 }
 
 impl Loaded {
@@ -62,7 +76,11 @@ impl Loaded {
                 None => bail!(
                     "no system or chart named `{n}` in {}; available: {}",
                     self.path,
-                    systems.iter().map(|s| s.name.as_str()).collect::<Vec<_>>().join(", ")
+                    systems
+                        .iter()
+                        .map(|s| s.name.as_str())
+                        .collect::<Vec<_>>()
+                        .join(", ")
                 ),
             };
         }
@@ -73,7 +91,10 @@ impl Loaded {
             many => bail!(
                 "{} declares several systems; choose one with --system ({})",
                 self.path,
-                many.iter().map(|s| s.name.as_str()).collect::<Vec<_>>().join(", ")
+                many.iter()
+                    .map(|s| s.name.as_str())
+                    .collect::<Vec<_>>()
+                    .join(", ")
             ),
         }
         match systems.as_slice() {
@@ -82,7 +103,10 @@ impl Loaded {
             many => bail!(
                 "{} declares several charts; choose one with --system ({})",
                 self.path,
-                many.iter().map(|s| s.name.as_str()).collect::<Vec<_>>().join(", ")
+                many.iter()
+                    .map(|s| s.name.as_str())
+                    .collect::<Vec<_>>()
+                    .join(", ")
             ),
         }
     }

@@ -99,7 +99,10 @@ fn run(cli: Cli) -> Result<u8> {
             eprintln!("ok: {model}: {charts} chart(s), {systems} system(s), {warnings} warning(s)");
             Ok(0)
         }
-        Command::Lint { model, deny_warnings } => {
+        Command::Lint {
+            model,
+            deny_warnings,
+        } => {
             let loaded = load::load(&model, true)?;
             let warnings = loaded.diags.iter().filter(|d| !d.is_error()).count();
             eprintln!("{model}: {warnings} finding(s)");
@@ -107,15 +110,25 @@ fn run(cli: Cli) -> Result<u8> {
         }
         Command::Sim(args) => sim_cmd::run(args),
         Command::Verify(args) => verify_cmd::run(args),
-        Command::Dot { model, system, coverage, output } => {
+        Command::Dot {
+            model,
+            system,
+            coverage,
+            output,
+        } => {
             let loaded = load::load(&model, false)?;
             let sys = loaded.system(system.as_deref())?;
             let program = loaded.lower(sys)?;
             let counts = match coverage {
                 Some(f) => {
-                    let text = std::fs::read_to_string(&f).map_err(|e| anyhow::anyhow!("cannot read `{f}`: {e}"))?;
-                    let v: serde_json::Value = serde_json::from_str(&text).map_err(|e| anyhow::anyhow!("`{f}` is not JSON: {e}"))?;
-                    Some(output::coverage::from_json(&program, &v).map_err(|e| anyhow::anyhow!("{f}: {e}"))?)
+                    let text = std::fs::read_to_string(&f)
+                        .map_err(|e| anyhow::anyhow!("cannot read `{f}`: {e}"))?;
+                    let v: serde_json::Value = serde_json::from_str(&text)
+                        .map_err(|e| anyhow::anyhow!("`{f}` is not JSON: {e}"))?;
+                    Some(
+                        output::coverage::from_json(&program, &v)
+                            .map_err(|e| anyhow::anyhow!("{f}: {e}"))?,
+                    )
                 }
                 None => None,
             };

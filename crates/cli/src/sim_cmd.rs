@@ -50,10 +50,14 @@ pub fn run(a: SimArgs) -> Result<u8> {
     let loaded = load::load(&a.model, false)?;
     let sys = loaded.system(a.system.as_deref())?;
     let program = loaded.lower(sys)?;
-    let opts = Options { coverage: a.coverage.is_some(), no_trace: false };
+    let opts = Options {
+        coverage: a.coverage.is_some(),
+        no_trace: false,
+    };
     let run = match (&a.scenario, a.random) {
         (Some(path), _) => {
-            let text = std::fs::read_to_string(path).map_err(|e| anyhow::anyhow!("cannot read `{path}`: {e}"))?;
+            let text = std::fs::read_to_string(path)
+                .map_err(|e| anyhow::anyhow!("cannot read `{path}`: {e}"))?;
             let sc = match scenario::parse(&text, &program) {
                 Ok(s) => s,
                 Err(errs) => {
@@ -61,7 +65,11 @@ pub fn run(a: SimArgs) -> Result<u8> {
                         let line = text.lines().nth(e.line - 1).unwrap_or("");
                         eprintln!("error: {} ({path}:{}:{})", e.message, e.line, e.col);
                         eprintln!("  | {line}");
-                        eprintln!("  | {}{}", " ".repeat(e.col - 1), "^".repeat(e.len.min(line.len().saturating_sub(e.col - 1)).max(1)));
+                        eprintln!(
+                            "  | {}{}",
+                            " ".repeat(e.col - 1),
+                            "^".repeat(e.len.min(line.len().saturating_sub(e.col - 1)).max(1))
+                        );
                         if let Some(h) = &e.hint {
                             eprintln!("  = help: {h}");
                         }
@@ -72,7 +80,9 @@ pub fn run(a: SimArgs) -> Result<u8> {
             statecheck_sim::run(&program, &mut ScenarioInputs::new(&sc), opts)
         }
         (None, Some(n)) => statecheck_sim::run(&program, &mut RandomInputs::new(a.seed, n), opts),
-        (None, None) => bail!("give a scenario (--scenario FILE) or a number of random ticks (--random N)"),
+        (None, None) => {
+            bail!("give a scenario (--scenario FILE) or a number of random ticks (--random N)")
+        }
     };
     let views = Views::new(&loaded.model, &program);
     if let Some(f) = &a.save_scenario {
@@ -80,12 +90,28 @@ pub fn run(a: SimArgs) -> Result<u8> {
         write_out(Some(f), &scenario::format(&sc, &program))?;
     }
     if let Some(f) = &a.vcd {
-        write_out(Some(f), &output::vcd::render(&program, &views, &run.trace, loaded.model.tick_ms.unwrap_or(1)))?;
+        write_out(
+            Some(f),
+            &output::vcd::render(
+                &program,
+                &views,
+                &run.trace,
+                loaded.model.tick_ms.unwrap_or(1),
+            ),
+        )?;
     }
     let (status, code, message) = describe_stop(&run.stop, &program, &loaded.source, &loaded.path);
     if a.json {
-        let ticks: Vec<serde_json::Value> = run.trace.iter().map(|r| output::json::tick(&program, &views, r)).collect();
-        let reached: serde_json::Map<String, serde_json::Value> = run.reached.iter().map(|(n, t)| (n.clone(), serde_json::json!(t))).collect();
+        let ticks: Vec<serde_json::Value> = run
+            .trace
+            .iter()
+            .map(|r| output::json::tick(&program, &views, r))
+            .collect();
+        let reached: serde_json::Map<String, serde_json::Value> = run
+            .reached
+            .iter()
+            .map(|(n, t)| (n.clone(), serde_json::json!(t)))
+            .collect();
         let mut obj = serde_json::json!({"ticks": ticks, "result": {"status": status, "message": message}, "reached": reached});
         if let Stop::Violation { tick, property } = &run.stop {
             obj["result"]["tick"] = serde_json::json!(tick);
@@ -106,23 +132,32 @@ pub fn run(a: SimArgs) -> Result<u8> {
     }
     if let (Some(counts), Some(file)) = (&run.coverage, &a.coverage) {
         if !a.quiet && !a.json {
-            eprint!("{}", output::coverage::summary(&program, counts, &loaded.source));
+            eprint!(
+                "{}",
+                output::coverage::summary(&program, counts, &loaded.source)
+            );
         }
         if !file.is_empty() {
             let v = output::coverage::to_json(&program, counts, &loaded.source);
-            write_out(Some(file), &format!("{}\n", serde_json::to_string_pretty(&v)?))?;
+            write_out(
+                Some(file),
+                &format!("{}\n", serde_json::to_string_pretty(&v)?),
+            )?;
         }
     }
-    if code != 0 || !a.quiet {
-        if code != 0 || !a.json {
-            eprintln!("{message}");
-        }
+    if code != 0 || (!a.quiet && !a.json) {
+        eprintln!("{message}");
     }
     Ok(code)
 }
 
 /// Status word, exit code and a message for how a run ended.
-fn describe_stop(stop: &Stop, p: &statecheck_ir::Program, source: &str, path: &str) -> (&'static str, u8, String) {
+fn describe_stop(
+    stop: &Stop,
+    p: &statecheck_ir::Program,
+    source: &str,
+    path: &str,
+) -> (&'static str, u8, String) {
     let idx = LineIndex::new(source);
     match stop {
         Stop::Completed => ("completed", 0, "run completed".into()),

@@ -1,17 +1,197 @@
-//! `statecheck verify`: exhaustive verification of a system's properties.
+//! `statecheck verify`: exhaustive verification of a system's properties with the explicit
+//! engine; counterexamples written as scenarios and replayed through the simulator.
+//!
+//! Exit codes: 0 every property holds (`proved`, `bounded`, or `reachable` as asked), 1 some
+//! property is `violated` or a `reachable` target is `unreachable`, 3 some verdict is `unknown`
+//! (a limit was hit), 2 usage errors.
 
+mod cex;
+mod report;
+
+use crate::load;
 use anyhow::{bail, Result};
 use clap::Args;
+use statecheck_explicit::{human_bytes, verify, Options, Verdict};
+use std::io::IsTerminal;
+use std::time::Duration;
 
 /// Arguments of `statecheck verify`.
 #[derive(Args)]
 pub struct VerifyArgs {
     /// The `.sc` model file.
     model: String,
+    /// The system (or chart) to verify.
+    #[arg(long)]
+    system: Option<String>,
+    /// Check only this property (repeatable; built-ins may be named too).
+    #[arg(long = "property", value_name = "NAME")]
+    properties: Vec<String>,
+    /// Explore at most K ticks; undecided properties are then `bounded`.
+    #[arg(long, value_name = "K")]
+    depth: Option<u64>,
+    /// Stop with `unknown` when memory would exceed SIZE (e.g. 512M, 2G); default: 80% of the
+    /// available memory.
+    #[arg(long, value_name = "SIZE")]
+    max_memory: Option<String>,
+    /// Stop with `unknown` after N states.
+    #[arg(long, value_name = "N")]
+    max_states: Option<u64>,
+    /// Stop with `unknown` after this many seconds.
+    #[arg(long, value_name = "SECONDS")]
+    timeout: Option<f64>,
+    /// Worker threads (default: one per core).
+    #[arg(long, value_name = "N")]
+    threads: Option<usize>,
+    /// Explore even when there are more than a million input vectors per tick.
+    #[arg(long)]
+    force: bool,
+    /// Print one JSON object.
+    #[arg(long)]
+    json: bool,
+    /// Print only the verdict table (no statistics, counterexample tables or progress).
+    #[arg(long, short)]
+    quiet: bool,
+    /// Write each counterexample or witness as a scenario file `DIR/PROPERTY.scn`.
+    #[arg(long, value_name = "DIR")]
+    cex_dir: Option<String>,
+    /// Also write each counterexample as a VCD waveform `DIR/PROPERTY.vcd` (needs --cex-dir).
+    #[arg(long, requires = "cex_dir")]
+    vcd: bool,
 }
 
 /// Run the command; returns the exit code.
 pub fn run(a: VerifyArgs) -> Result<u8> {
-    let _ = a.model;
-    bail!("not implemented yet")
+    let max_memory = match &a.max_memory {
+        Some(s) => Some(parse_size(s)?),
+        None => default_memory_limit(),
+    };
+    if a.threads == Some(0) {
+        bail!("--threads must be at least 1");
+    }
+    let timeout = match a.timeout {
+        Some(t) if !(t > 0.0 && t.is_finite()) => {
+            bail!("--timeout must be a positive number of seconds")
+        }
+        Some(t) => Some(Duration::from_secs_f64(t)),
+        None => None,
+    };
+    let loaded = load::load(&a.model, false)?;
+    let sys = loaded.system(a.system.as_deref())?;
+    let program = loaded.lower(sys)?;
+    let opts = Options {
+        properties: a.properties.clone(),
+        depth: a.depth,
+        max_memory,
+        max_states: a.max_states,
+        timeout,
+        threads: a.threads.unwrap_or(0),
+        force: a.force,
+        ..Options::default()
+    };
+    report::announce_branching(&program, &opts, a.json || a.quiet);
+    let bar = (!a.json && !a.quiet && std::io::stderr().is_terminal()).then(progress_bar);
+    let tick = |p: &statecheck_explicit::Progress| {
+        if let Some(b) = &bar {
+            let rate = p.states as f64 / p.elapsed.as_secs_f64().max(1e-9);
+            b.set_message(format!(
+                "depth {} · {} states · {:.0} states/s · {}",
+                p.depth,
+                p.states,
+                rate,
+                human_bytes(p.memory_bytes)
+            ));
+        }
+    };
+    let outcome = verify(&program, &opts, Some(&tick));
+    if let Some(b) = &bar {
+        b.finish_and_clear();
+    }
+    let rep = match outcome {
+        Ok(r) => r,
+        Err(e) => bail!("{e}"),
+    };
+    let cexs = cex::process(&loaded, &program, &rep, a.cex_dir.as_deref(), a.vcd)?;
+    if a.json {
+        let v = report::json(&program, &loaded.source, &rep, &cexs);
+        crate::write_out(None, &format!("{}\n", serde_json::to_string(&v)?))?;
+    } else {
+        crate::write_out(None, &report::text(&loaded, &program, &rep, &cexs, a.quiet))?;
+    }
+    Ok(exit_code(&rep.results))
+}
+
+/// 1 when something is violated or unreachable, else 3 when something is unknown, else 0.
+fn exit_code(results: &[statecheck_explicit::PropResult]) -> u8 {
+    if results
+        .iter()
+        .any(|r| matches!(r.verdict, Verdict::Violated | Verdict::Unreachable))
+    {
+        1
+    } else if results.iter().any(|r| r.verdict == Verdict::Unknown) {
+        3
+    } else {
+        0
+    }
+}
+
+fn progress_bar() -> indicatif::ProgressBar {
+    let b = indicatif::ProgressBar::new_spinner();
+    b.set_draw_target(indicatif::ProgressDrawTarget::stderr());
+    b.enable_steady_tick(Duration::from_millis(200));
+    b
+}
+
+/// Parse a size such as `512M`, `2G`, `1.5GiB`, `1000000` (bytes).
+fn parse_size(s: &str) -> Result<u64> {
+    let t = s.trim();
+    let split = t
+        .find(|c: char| !(c.is_ascii_digit() || c == '.'))
+        .unwrap_or(t.len());
+    let (num, unit) = t.split_at(split);
+    let n: f64 = match num.parse() {
+        Ok(n) => n,
+        Err(_) => bail!("bad size `{s}`: write a number with an optional unit, e.g. 512M or 2G"),
+    };
+    let mult: f64 = match unit
+        .trim()
+        .to_ascii_uppercase()
+        .trim_end_matches("IB")
+        .trim_end_matches('B')
+    {
+        "" => 1.0,
+        "K" => 1024.0,
+        "M" => 1024.0 * 1024.0,
+        "G" => 1024.0 * 1024.0 * 1024.0,
+        "T" => 1024.0 * 1024.0 * 1024.0 * 1024.0,
+        _ => bail!("bad size unit in `{s}`: use K, M, G or T"),
+    };
+    let bytes = n * mult;
+    if !(bytes >= 1.0 && bytes.is_finite()) {
+        bail!("bad size `{s}`: must be at least one byte");
+    }
+    Ok(bytes as u64)
+}
+
+/// 80% of the memory available now (Linux), so that a run ends with `unknown` instead of being
+/// killed.
+fn default_memory_limit() -> Option<u64> {
+    let info = std::fs::read_to_string("/proc/meminfo").ok()?;
+    let line = info.lines().find(|l| l.starts_with("MemAvailable:"))?;
+    let kib: u64 = line.split_whitespace().nth(1)?.parse().ok()?;
+    Some(kib * 1024 / 5 * 4)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::parse_size;
+
+    #[test]
+    fn sizes() {
+        assert_eq!(parse_size("512M").ok(), Some(512 << 20));
+        assert_eq!(parse_size("2G").ok(), Some(2 << 30));
+        assert_eq!(parse_size("2GiB").ok(), Some(2 << 30));
+        assert_eq!(parse_size("1000").ok(), Some(1000));
+        assert!(parse_size("12Q").is_err());
+        assert!(parse_size("").is_err());
+    }
 }

@@ -15,7 +15,8 @@ fn repo_root() -> PathBuf {
 }
 
 fn directive<'a>(text: &'a str, key: &str) -> Option<&'a str> {
-    text.lines().find_map(|l| l.strip_prefix(&format!("# {key}:")).map(str::trim))
+    text.lines()
+        .find_map(|l| l.strip_prefix(&format!("# {key}:")).map(str::trim))
 }
 
 #[test]
@@ -28,10 +29,17 @@ fn every_scenario_matches_its_hand_derived_trace() {
         .filter(|p| p.extension().is_some_and(|e| e == "scn"))
         .collect();
     scenarios.sort();
-    assert!(scenarios.len() >= 9, "expected the semantics scenarios, found {}", scenarios.len());
+    assert!(
+        scenarios.len() >= 9,
+        "expected the semantics scenarios, found {}",
+        scenarios.len()
+    );
     let mut failures = Vec::new();
     for scn in &scenarios {
-        let stem = scn.file_stem().and_then(|s| s.to_str()).expect("utf-8 name");
+        let stem = scn
+            .file_stem()
+            .and_then(|s| s.to_str())
+            .expect("utf-8 name");
         let model = if dir.join(format!("{stem}.sc")).exists() {
             format!("{stem}.sc")
         } else {
@@ -39,8 +47,12 @@ fn every_scenario_matches_its_hand_derived_trace() {
         };
         let text = std::fs::read_to_string(scn).expect("scenario readable");
         let mut cmd = Command::new(env!("CARGO_BIN_EXE_statecheck"));
-        cmd.current_dir(&root).env("NO_COLOR", "1").arg("sim").arg(format!("tests/semantics/{model}"));
-        cmd.arg("--scenario").arg(format!("tests/semantics/{stem}.scn"));
+        cmd.current_dir(&root)
+            .env("NO_COLOR", "1")
+            .arg("sim")
+            .arg(format!("tests/semantics/{model}"));
+        cmd.arg("--scenario")
+            .arg(format!("tests/semantics/{stem}.scn"));
         if let Some(args) = directive(&text, "args") {
             cmd.args(args.split_whitespace());
         }
@@ -50,7 +62,10 @@ fn every_scenario_matches_its_hand_derived_trace() {
         assert!(!stderr.contains("panicked"), "{stem}: panic: {stderr}");
         let want_exit: i32 = directive(&text, "exit").map_or(0, |e| e.parse().expect("exit code"));
         if out.status.code() != Some(want_exit) {
-            failures.push(format!("{stem}: exit {:?}, expected {want_exit}; stderr:\n{stderr}", out.status.code()));
+            failures.push(format!(
+                "{stem}: exit {:?}, expected {want_exit}; stderr:\n{stderr}",
+                out.status.code()
+            ));
         }
         if let Some(needle) = directive(&text, "stderr") {
             if !stderr.contains(needle) {
@@ -64,7 +79,9 @@ fn every_scenario_matches_its_hand_derived_trace() {
         }
         let expected = std::fs::read_to_string(&expected_path).unwrap_or_default();
         if expected != stdout {
-            failures.push(format!("{stem}: trace differs\n--- expected\n{expected}--- actual\n{stdout}"));
+            failures.push(format!(
+                "{stem}: trace differs\n--- expected\n{expected}--- actual\n{stdout}"
+            ));
         }
     }
     assert!(failures.is_empty(), "{}", failures.join("\n\n"));

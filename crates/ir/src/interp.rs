@@ -1,8 +1,8 @@
 //! The interpreter of the IR: the only executor of the step semantics.
 //!
 //! A [`Machine`] owns one slot vector and runs [`Program::step`] on it. It allocates nothing
-//! per step; the checkers run one machine per thread and load and store packed states around
-//! each step.
+//! per step (an error, which ends the step, allocates its report); the checkers run one
+//! machine per thread and load and store packed states around each step.
 
 use crate::program::*;
 use statecheck_model::ops;
@@ -50,7 +50,9 @@ impl RuntimeErrorKind {
     /// A sentence describing the error.
     pub fn describe(&self) -> String {
         match self {
-            RuntimeErrorKind::Range { value, lo, hi } => format!("value {value} is out of range {lo}..{hi}"),
+            RuntimeErrorKind::Range { value, lo, hi } => {
+                format!("value {value} is out of range {lo}..{hi}")
+            }
             RuntimeErrorKind::DivisionByZero => "division by zero".into(),
             RuntimeErrorKind::BadShift => "shift amount outside 0..62".into(),
             RuntimeErrorKind::Overflow => "arithmetic overflow".into(),
@@ -63,21 +65,51 @@ impl Program {
     pub fn describe_error(&self, e: &RuntimeError) -> String {
         match self.sites.get(e.site as usize) {
             Some(site) => {
-                let inst = site.instance.and_then(|i| self.instances.get(i as usize)).map(|i| i.name.as_str()).unwrap_or("system");
-                let state = if site.state.is_empty() { String::new() } else { format!(", state {}", site.state) };
-                format!("{} in {} (instance {inst}{state})", e.kind.describe(), site.what)
+                let inst = site
+                    .instance
+                    .and_then(|i| self.instances.get(i as usize))
+                    .map(|i| i.name.as_str())
+                    .unwrap_or("system");
+                let state = if site.state.is_empty() {
+                    String::new()
+                } else {
+                    format!(", state {}", site.state)
+                };
+                format!(
+                    "{} in {} (instance {inst}{state})",
+                    e.kind.describe(),
+                    site.what
+                )
             }
             None => e.kind.describe(),
         }
     }
 }
 
+/// Errors travel boxed so that `Result<i64, Fault>` fits in two registers on the hot path.
+type Fault = Box<RuntimeError>;
+
+fn fault(kind: RuntimeErrorKind, site: SiteId) -> Fault {
+    Box::new(RuntimeError { kind, site })
+}
+
+/// A boxed run-time error (for the compiled fast path).
+pub(crate) fn fault_of(kind: RuntimeErrorKind, site: SiteId) -> Fault {
+    fault(kind, site)
+}
+
 /// The state of one running system.
+///
+/// Its register file holds the program's slots first, then the compiled code's locals,
+/// temporaries and constants.
 #[derive(Clone, Debug)]
 pub struct Machine<'p> {
     program: &'p Program,
-    /// All slot values.
-    slots: Vec<i64>,
+    code: &'p crate::vm::Code,
+    /// All registers; `regs[..slots.len()]` are the slots.
+    regs: Vec<i64>,
+    /// Number of slots.
+    n_slots: usize,
     /// Coverage counters, if enabled.
     coverage: Option<Vec<u64>>,
 }
@@ -85,9 +117,12 @@ pub struct Machine<'p> {
 impl<'p> Machine<'p> {
     /// A machine in the state before tick 0 (every slot at its initial value).
     pub fn new(program: &'p Program) -> Machine<'p> {
+        let code = program.code();
         Machine {
             program,
-            slots: program.slots.iter().map(|s| s.init).collect(),
+            code,
+            regs: code.init_regs.clone(),
+            n_slots: program.slots.len(),
             coverage: None,
         }
     }
@@ -109,125 +144,217 @@ impl<'p> Machine<'p> {
 
     /// All slot values.
     pub fn slots(&self) -> &[i64] {
-        &self.slots
+        &self.regs[..self.n_slots]
     }
 
     /// The persistent state.
     pub fn state(&self) -> &[i64] {
-        &self.slots[..self.program.n_state]
+        &self.regs[..self.program.n_state]
     }
 
     /// Overwrite the persistent state.
     pub fn load_state(&mut self, state: &[i64]) {
-        self.slots[..self.program.n_state].copy_from_slice(state);
+        self.regs[..self.program.n_state].copy_from_slice(state);
     }
 
     /// Set a slot (normally an input slot) to a value.
+    #[inline]
     pub fn set(&mut self, slot: SlotId, value: i64) {
-        self.slots[slot as usize] = value;
+        self.regs[slot as usize] = value;
     }
 
     /// Value of a slot.
+    #[inline]
     pub fn get(&self, slot: SlotId) -> i64 {
-        self.slots[slot as usize]
+        self.regs[slot as usize]
     }
 
-    /// Evaluate an expression on the current slots.
-    pub fn eval(&self, e: ExprId) -> Result<i64, RuntimeError> {
-        eval(&self.program.nodes, &self.slots, e)
+    /// Evaluate an expression on the current slots (compiled when it is a property,
+    /// assumption or active-state expression of the program).
+    pub fn eval(&mut self, e: ExprId) -> Result<i64, RuntimeError> {
+        if let Some(seg) = self.code.exprs.get(&e) {
+            crate::vm::run(self.code, &mut self.regs, None, seg.start).map_err(|f| *f)?;
+            return Ok(self.regs[seg.reg as usize]);
+        }
+        eval(&self.program.nodes, &self.regs[..self.n_slots], e)
     }
 
     /// Run one tick with the inputs currently in the input slots.
+    #[inline]
     pub fn step(&mut self) -> Result<(), RuntimeError> {
+        if self.code.max_depth > crate::vm::STACK {
+            return self.step_reference();
+        }
+        crate::vm::run(
+            self.code,
+            &mut self.regs,
+            self.coverage.as_deref_mut(),
+            self.code.step,
+        )
+        .map_err(|f| *f)
+    }
+
+    /// Run one tick with the tree-walking reference evaluator (for testing the fast path).
+    pub fn step_reference(&mut self) -> Result<(), RuntimeError> {
         let p = self.program;
-        exec(p, &mut self.slots, &mut self.coverage, &p.step)
+        let mut slots = self.regs[..self.n_slots].to_vec();
+        let mut locals = vec![0; p.n_locals];
+        let mut ex = Exec {
+            p,
+            slots: &mut slots,
+            locals: &mut locals,
+            cov: self.coverage.as_deref_mut(),
+        };
+        let r = ex.block(&p.step).map_err(|f| *f);
+        self.regs[..self.n_slots].copy_from_slice(&slots);
+        r
     }
 }
 
-fn exec(p: &Program, slots: &mut [i64], cov: &mut Option<Vec<u64>>, stmts: &[Stmt]) -> Result<(), RuntimeError> {
-    for s in stmts {
-        match s {
-            Stmt::Assign { slot, expr, site } => {
-                let v = eval(&p.nodes, slots, *expr)?;
-                if let Some(site) = site {
-                    let sl = &p.slots[*slot as usize];
-                    if v < sl.lo || v > sl.hi {
-                        return Err(RuntimeError { kind: RuntimeErrorKind::Range { value: v, lo: sl.lo, hi: sl.hi }, site: *site });
+/// Evaluate expression `e` over `slots` (for read-only views such as trace rendering).
+pub fn eval(nodes: &[Node], slots: &[i64], e: ExprId) -> Result<i64, RuntimeError> {
+    let mut locals = Vec::new();
+    let mut ev = Eval {
+        nodes,
+        slots,
+        locals: &mut locals,
+    };
+    ev.eval(e).map_err(|f| *f)
+}
+
+struct Exec<'a> {
+    p: &'a Program,
+    slots: &'a mut Vec<i64>,
+    locals: &'a mut Vec<i64>,
+    cov: Option<&'a mut [u64]>,
+}
+
+impl Exec<'_> {
+    fn value(&mut self, e: ExprId) -> Result<i64, Fault> {
+        Eval {
+            nodes: &self.p.nodes,
+            slots: self.slots,
+            locals: self.locals,
+        }
+        .eval(e)
+    }
+
+    fn block(&mut self, stmts: &[Stmt]) -> Result<(), Fault> {
+        for s in stmts {
+            match s {
+                Stmt::Assign { slot, expr, site } => {
+                    let v = self.value(*expr)?;
+                    if let Some(site) = site {
+                        let sl = &self.p.slots[*slot as usize];
+                        if v < sl.lo || v > sl.hi {
+                            return Err(fault(
+                                RuntimeErrorKind::Range {
+                                    value: v,
+                                    lo: sl.lo,
+                                    hi: sl.hi,
+                                },
+                                *site,
+                            ));
+                        }
+                    }
+                    self.slots[*slot as usize] = v;
+                }
+                Stmt::If {
+                    cond,
+                    then,
+                    otherwise,
+                } => {
+                    if self.value(*cond)? != 0 {
+                        self.block(then)?;
+                    } else {
+                        self.block(otherwise)?;
                     }
                 }
-                slots[*slot as usize] = v;
-            }
-            Stmt::If { cond, then, otherwise } => {
-                if eval(&p.nodes, slots, *cond)? != 0 {
-                    exec(p, slots, cov, then)?;
-                } else {
-                    exec(p, slots, cov, otherwise)?;
+                Stmt::Switch { slot, cases } => {
+                    let v = self.slots[*slot as usize];
+                    if let Some(block) = cases.get(v as usize) {
+                        self.block(block)?;
+                    }
                 }
-            }
-            Stmt::Switch { slot, cases } => {
-                let v = slots[*slot as usize];
-                if let Some(block) = cases.get(v as usize) {
-                    exec(p, slots, cov, block)?;
+                Stmt::Call(proc_id) => {
+                    let p = self.p;
+                    self.block(&p.procs[*proc_id as usize].body)?;
                 }
-            }
-            Stmt::Call(proc_id) => exec(p, slots, cov, &p.procs[*proc_id as usize].body)?,
-            Stmt::Cover(c) => {
-                if let Some(counts) = cov {
-                    counts[*c as usize] += 1;
+                Stmt::Cover(c) => {
+                    if let Some(counts) = self.cov.as_deref_mut() {
+                        counts[*c as usize] += 1;
+                    }
                 }
             }
         }
+        Ok(())
     }
-    Ok(())
 }
 
-fn op_error(e: ops::OpError, site: SiteId) -> RuntimeError {
+struct Eval<'a> {
+    nodes: &'a [Node],
+    slots: &'a [i64],
+    locals: &'a mut Vec<i64>,
+}
+
+pub(crate) fn op_fault(e: ops::OpError, site: SiteId) -> Fault {
     let kind = match e {
         ops::OpError::DivisionByZero => RuntimeErrorKind::DivisionByZero,
         ops::OpError::BadShift => RuntimeErrorKind::BadShift,
         ops::OpError::Overflow => RuntimeErrorKind::Overflow,
     };
-    RuntimeError { kind, site }
+    fault(kind, site)
 }
 
-/// Evaluate expression `e` over `slots`.
-pub fn eval(nodes: &[Node], slots: &[i64], e: ExprId) -> Result<i64, RuntimeError> {
-    Ok(match &nodes[e as usize] {
-        Node::Const(v) => *v,
-        Node::Slot(s) => slots[*s as usize],
-        Node::Unary(op, a) => {
-            let a = eval(nodes, slots, *a)?;
-            ops::unary(*op, a).map_err(|err| op_error(err, u32::MAX))?
-        }
-        Node::Binary(op, a, b, site) => {
-            let a = eval(nodes, slots, *a)?;
-            match op {
-                BinOp::And if a == 0 => return Ok(0),
-                BinOp::Or if a != 0 => return Ok(1),
-                _ => {}
+impl Eval<'_> {
+    fn eval(&mut self, e: ExprId) -> Result<i64, Fault> {
+        Ok(match self.nodes[e as usize] {
+            Node::Const(v) => v,
+            Node::Slot(s) => self.slots[s as usize],
+            Node::Unary(op, a) => {
+                let a = self.eval(a)?;
+                ops::unary(op, a).map_err(|err| op_fault(err, u32::MAX))?
             }
-            let b = eval(nodes, slots, *b)?;
-            ops::binary(*op, a, b).map_err(|err| op_error(err, *site))?
-        }
-        Node::Ite(c, a, b) => {
-            if eval(nodes, slots, *c)? != 0 {
-                eval(nodes, slots, *a)?
-            } else {
-                eval(nodes, slots, *b)?
+            Node::Binary(op, a, b, site) => {
+                let a = self.eval(a)?;
+                match op {
+                    BinOp::And if a == 0 => return Ok(0),
+                    BinOp::Or if a != 0 => return Ok(1),
+                    _ => {}
+                }
+                let b = self.eval(b)?;
+                ops::binary(op, a, b).map_err(|err| op_fault(err, site))?
             }
-        }
-        Node::Min(a, b) => eval(nodes, slots, *a)?.min(eval(nodes, slots, *b)?),
-        Node::Max(a, b) => eval(nodes, slots, *a)?.max(eval(nodes, slots, *b)?),
-        Node::Abs(a, site) => {
-            let a = eval(nodes, slots, *a)?;
-            a.checked_abs().ok_or(RuntimeError { kind: RuntimeErrorKind::Overflow, site: *site })?
-        }
-        Node::Check(a, lo, hi, site) => {
-            let v = eval(nodes, slots, *a)?;
-            if v < *lo || v > *hi {
-                return Err(RuntimeError { kind: RuntimeErrorKind::Range { value: v, lo: *lo, hi: *hi }, site: *site });
+            Node::Ite(c, a, b) => {
+                if self.eval(c)? != 0 {
+                    self.eval(a)?
+                } else {
+                    self.eval(b)?
+                }
             }
-            v
-        }
-    })
+            Node::Min(a, b) => self.eval(a)?.min(self.eval(b)?),
+            Node::Max(a, b) => self.eval(a)?.max(self.eval(b)?),
+            Node::Abs(a, site) => {
+                let a = self.eval(a)?;
+                a.checked_abs()
+                    .ok_or_else(|| fault(RuntimeErrorKind::Overflow, site))?
+            }
+            Node::Check(a, lo, hi, site) => {
+                let v = self.eval(a)?;
+                if v < lo || v > hi {
+                    return Err(fault(RuntimeErrorKind::Range { value: v, lo, hi }, site));
+                }
+                v
+            }
+            Node::Let(l, v, body) => {
+                let v = self.eval(v)?;
+                if self.locals.len() <= l as usize {
+                    self.locals.resize(l as usize + 1, 0);
+                }
+                self.locals[l as usize] = v;
+                self.eval(body)?
+            }
+            Node::Local(l) => self.locals.get(l as usize).copied().unwrap_or(0),
+        })
+    }
 }

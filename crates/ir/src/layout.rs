@@ -79,26 +79,72 @@ pub(crate) fn layout(model: &Model, sys: &System) -> Layout {
             match (var.kind, var.is_event) {
                 (VarKind::Input, _) => {}
                 (VarKind::Local, true) => {
-                    pend[v] = Some(a.push(0, Slot { name: format!("{name}$pending"), role: SlotRole::Pending { instance: i as u32, var: v as u32 }, lo: 0, hi: 1, init: 0, display: ValueKind::Int }));
+                    pend[v] = Some(a.push(
+                        0,
+                        Slot {
+                            name: format!("{name}$pending"),
+                            role: SlotRole::Pending {
+                                instance: i as u32,
+                                var: v as u32,
+                            },
+                            lo: 0,
+                            hi: 1,
+                            init: 0,
+                            display: ValueKind::Int,
+                        },
+                    ));
                 }
                 _ => {
-                    vars[v] = Some(a.push(0, Slot { name, role: SlotRole::Var { instance: i as u32, var: v as u32 }, lo, hi, init: var.init, display: value_kind(model, var.ty) }));
+                    vars[v] = Some(a.push(
+                        0,
+                        Slot {
+                            name,
+                            role: SlotRole::Var {
+                                instance: i as u32,
+                                var: v as u32,
+                            },
+                            lo,
+                            hi,
+                            init: var.init,
+                            display: value_kind(model, var.ty),
+                        },
+                    ));
                 }
             }
         }
         let mut regions = vec![None; chart.states.len()];
         let mut timers = vec![None; chart.states.len()];
         for (s, node) in chart.states.iter().enumerate() {
-            if let NodeKind::Or { children, initial, .. } = &node.kind {
-                let label = if node.path.is_empty() { String::new() } else { format!(".{}", node.path) };
-                regions[s] = Some(a.push(0, Slot {
-                    name: format!("{}{label}$active", inst.name),
-                    role: SlotRole::Region { instance: i as u32, node: s as u32 },
-                    lo: 0,
-                    hi: children.len() as i64 - 1,
-                    init: *initial as i64,
-                    display: ValueKind::Enum(children.iter().map(|c| chart.states[*c as usize].name.clone()).collect()),
-                }));
+            if let NodeKind::Or {
+                children, initial, ..
+            } = &node.kind
+            {
+                let label = if node.path.is_empty() {
+                    String::new()
+                } else {
+                    format!(".{}", node.path)
+                };
+                regions[s] = Some(
+                    a.push(
+                        0,
+                        Slot {
+                            name: format!("{}{label}$active", inst.name),
+                            role: SlotRole::Region {
+                                instance: i as u32,
+                                node: s as u32,
+                            },
+                            lo: 0,
+                            hi: children.len() as i64 - 1,
+                            init: *initial as i64,
+                            display: ValueKind::Enum(
+                                children
+                                    .iter()
+                                    .map(|c| chart.states[*c as usize].name.clone())
+                                    .collect(),
+                            ),
+                        },
+                    ),
+                );
             }
             let max_after = node
                 .transitions
@@ -109,14 +155,20 @@ pub(crate) fn layout(model: &Model, sys: &System) -> Layout {
                 })
                 .max();
             if let Some(m) = max_after {
-                let p = a.push(0, Slot {
-                    name: format!("{}.{}$timer", inst.name, node.path),
-                    role: SlotRole::Timer { instance: i as u32, state: s as u32 },
-                    lo: 0,
-                    hi: m,
-                    init: 0,
-                    display: ValueKind::Int,
-                });
+                let p = a.push(
+                    0,
+                    Slot {
+                        name: format!("{}.{}$timer", inst.name, node.path),
+                        role: SlotRole::Timer {
+                            instance: i as u32,
+                            state: s as u32,
+                        },
+                        lo: 0,
+                        hi: m,
+                        init: 0,
+                        display: ValueKind::Int,
+                    },
+                );
                 timers[s] = Some((p, m));
             }
         }
@@ -125,20 +177,33 @@ pub(crate) fn layout(model: &Model, sys: &System) -> Layout {
         timer_prov.push(timers);
         pending_prov.push(pend);
     }
-    let started = a.push(0, Slot { name: "$started".into(), role: SlotRole::Started, lo: 0, hi: 1, init: 0, display: ValueKind::Int });
+    let started = a.push(
+        0,
+        Slot {
+            name: "$started".into(),
+            role: SlotRole::Started,
+            lo: 0,
+            hi: 1,
+            init: 0,
+            display: ValueKind::Int,
+        },
+    );
     let monitors_prov: Vec<Option<Prov>> = sys
         .properties
         .iter()
         .enumerate()
         .map(|(p, prop)| match &prop.kind {
-            PropertyKind::Respond { within, .. } => Some(a.push(0, Slot {
-                name: format!("{}$waited", prop.name),
-                role: SlotRole::Monitor { property: p as u32 },
-                lo: 0,
-                hi: within + 1,
-                init: 0,
-                display: ValueKind::Int,
-            })),
+            PropertyKind::Respond { within, .. } => Some(a.push(
+                0,
+                Slot {
+                    name: format!("{}$waited", prop.name),
+                    role: SlotRole::Monitor { property: p as u32 },
+                    lo: 0,
+                    hi: within + 1,
+                    init: 0,
+                    display: ValueKind::Int,
+                },
+            )),
             _ => None,
         })
         .collect();
@@ -148,12 +213,27 @@ pub(crate) fn layout(model: &Model, sys: &System) -> Layout {
     for (i, inst) in sys.instances.iter().enumerate() {
         let chart = &model.charts[inst.chart as usize];
         for (v, var) in chart.vars.iter().enumerate() {
-            if var.kind != VarKind::Input || sys.connections.iter().any(|c| c.to == (i as u32, v as u32)) {
+            if var.kind != VarKind::Input
+                || sys.connections.iter().any(|c| c.to == (i as u32, v as u32))
+            {
                 continue;
             }
             let (lo, hi) = model.bounds(var.ty);
             let name = format!("{}.{}", inst.name, var.name);
-            let p = a.push(1, Slot { name: name.clone(), role: SlotRole::Input { instance: i as u32, var: v as u32 }, lo, hi, init: if var.is_event { 0 } else { var.init }, display: value_kind(model, var.ty) });
+            let p = a.push(
+                1,
+                Slot {
+                    name: name.clone(),
+                    role: SlotRole::Input {
+                        instance: i as u32,
+                        var: v as u32,
+                    },
+                    lo,
+                    hi,
+                    init: if var.is_event { 0 } else { var.init },
+                    display: value_kind(model, var.ty),
+                },
+            );
             var_prov[i][v] = Some(p);
             input_info.push((p, name, var.is_event, i as u32, v as u32));
         }
@@ -168,13 +248,39 @@ pub(crate) fn layout(model: &Model, sys: &System) -> Layout {
         let chart = &model.charts[inst.chart as usize];
         for (v, var) in chart.vars.iter().enumerate() {
             if var.kind == VarKind::Local && var.is_event {
-                var_prov[i][v] = Some(a.push(2, Slot { name: format!("{}.{}", inst.name, var.name), role: SlotRole::Present { instance: i as u32, var: v as u32 }, lo: 0, hi: 1, init: 0, display: ValueKind::Int }));
+                var_prov[i][v] = Some(a.push(
+                    2,
+                    Slot {
+                        name: format!("{}.{}", inst.name, var.name),
+                        role: SlotRole::Present {
+                            instance: i as u32,
+                            var: v as u32,
+                        },
+                        lo: 0,
+                        hi: 1,
+                        init: 0,
+                        display: ValueKind::Int,
+                    },
+                ));
             }
         }
         let mut aborts = vec![None; chart.states.len()];
         for (s, node) in chart.states.iter().enumerate() {
             if matches!(node.kind, NodeKind::And { .. }) {
-                aborts[s] = Some(a.push(2, Slot { name: format!("{}.{}$abort", inst.name, node.path), role: SlotRole::Abort { instance: i as u32, state: s as u32 }, lo: 0, hi: 1, init: 0, display: ValueKind::Int }));
+                aborts[s] = Some(a.push(
+                    2,
+                    Slot {
+                        name: format!("{}.{}$abort", inst.name, node.path),
+                        role: SlotRole::Abort {
+                            instance: i as u32,
+                            state: s as u32,
+                        },
+                        lo: 0,
+                        hi: 1,
+                        init: 0,
+                        display: ValueKind::Int,
+                    },
+                ));
             }
         }
         abort_prov.push(aborts);
@@ -196,10 +302,14 @@ pub(crate) fn layout(model: &Model, sys: &System) -> Layout {
         .map(|(i, inst)| InstanceLayout {
             name: inst.name.clone(),
             chart: inst.chart,
-            var_slots: var_prov[i].iter().map(|p| p.map_or(u32::MAX, fin)).collect(),
+            var_slots: var_prov[i]
+                .iter()
+                .map(|p| p.map_or(u32::MAX, fin))
+                .collect(),
             region_slots: region_prov[i].iter().map(|p| p.map(fin)).collect(),
             active: Vec::new(),
-            observer: model.charts[inst.chart as usize].role == statecheck_model::ChartRole::Observer,
+            observer: model.charts[inst.chart as usize].role
+                == statecheck_model::ChartRole::Observer,
         })
         .collect();
     let mut slots = a.state;
@@ -209,12 +319,27 @@ pub(crate) fn layout(model: &Model, sys: &System) -> Layout {
         n_state: ns as usize,
         inputs: input_info
             .into_iter()
-            .map(|(p, name, is_event, instance, var)| Input { slot: fin(p), name, is_event, instance, var })
+            .map(|(p, name, is_event, instance, var)| Input {
+                slot: fin(p),
+                name,
+                is_event,
+                instance,
+                var,
+            })
             .collect(),
         instances,
-        timers: timer_prov.into_iter().map(|v| v.into_iter().map(|t| t.map(|(p, m)| (fin(p), m))).collect()).collect(),
-        pending: pending_prov.into_iter().map(|v| v.into_iter().map(|p| p.map(fin)).collect()).collect(),
-        aborts: abort_prov.into_iter().map(|v| v.into_iter().map(|p| p.map(fin)).collect()).collect(),
+        timers: timer_prov
+            .into_iter()
+            .map(|v| v.into_iter().map(|t| t.map(|(p, m)| (fin(p), m))).collect())
+            .collect(),
+        pending: pending_prov
+            .into_iter()
+            .map(|v| v.into_iter().map(|p| p.map(fin)).collect())
+            .collect(),
+        aborts: abort_prov
+            .into_iter()
+            .map(|v| v.into_iter().map(|p| p.map(fin)).collect())
+            .collect(),
         started: fin(started),
         monitors: monitors_prov.into_iter().map(|p| p.map(fin)).collect(),
         slots,
@@ -225,6 +350,12 @@ fn value_kind(model: &Model, ty: Type) -> ValueKind {
     match ty {
         Type::Bool => ValueKind::Bool,
         Type::Int { .. } => ValueKind::Int,
-        Type::Enum(e) => ValueKind::Enum(model.enums.get(e as usize).map(|d| d.variants.clone()).unwrap_or_default()),
+        Type::Enum(e) => ValueKind::Enum(
+            model
+                .enums
+                .get(e as usize)
+                .map(|d| d.variants.clone())
+                .unwrap_or_default(),
+        ),
     }
 }

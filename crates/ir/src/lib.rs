@@ -12,6 +12,7 @@ mod interp;
 mod layout;
 pub mod lower;
 mod program;
+mod vm;
 
 pub use interp::{eval, Machine, RuntimeError, RuntimeErrorKind};
 pub use lower::lower;

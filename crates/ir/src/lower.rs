@@ -48,6 +48,7 @@ pub fn lower(model: &Model, sys: &System) -> Result<Program, Vec<Diagnostic>> {
         exit_procs: HashMap::new(),
         enter_procs: HashMap::new(),
         state_covers: HashMap::new(),
+        locals: HashMap::new(),
         diags: Vec::new(),
         lay,
     };
@@ -70,6 +71,8 @@ struct Lowerer<'m> {
     exit_procs: HashMap<(u32, StateId), ProcId>,
     enter_procs: HashMap<(u32, StateId, bool), ProcId>,
     state_covers: HashMap<(u32, StateId), CoverId>,
+    /// Model `Let` ids to expression locals.
+    locals: HashMap<u32, u32>,
     diags: Vec<Diagnostic>,
 }
 
@@ -104,15 +107,26 @@ impl<'m> Lowerer<'m> {
 
     fn site(&mut self, ctx: Option<Ctx>, span: Span, what: String) -> SiteId {
         let (instance, state) = match ctx {
-            Some(c) => (Some(c.inst), self.chart(c.inst).states[c.state as usize].path.clone()),
+            Some(c) => (
+                Some(c.inst),
+                self.chart(c.inst).states[c.state as usize].path.clone(),
+            ),
             None => (None, String::new()),
         };
-        self.sites.push(Site { span, instance, state, what });
+        self.sites.push(Site {
+            span,
+            instance,
+            state,
+            what,
+        });
         self.sites.len() as SiteId - 1
     }
 
     fn new_proc(&mut self, name: String) -> ProcId {
-        self.procs.push(Proc { name, body: Vec::new() });
+        self.procs.push(Proc {
+            name,
+            body: Vec::new(),
+        });
         self.procs.len() as ProcId - 1
     }
 
@@ -124,10 +138,13 @@ impl<'m> Lowerer<'m> {
             for s in 0..chart.states.len() as StateId {
                 let mut conj: Option<ExprId> = None;
                 for n in chart.ancestry(s) {
-                    let Some(p) = chart.states[n as usize].parent else { continue };
+                    let Some(p) = chart.states[n as usize].parent else {
+                        continue;
+                    };
                     if let NodeKind::Or { children, .. } = &chart.states[p as usize].kind {
                         let idx = children.iter().position(|c| *c == n).unwrap_or(0) as i64;
-                        let slot = self.lay.instances[i as usize].region_slots[p as usize].unwrap_or(0);
+                        let slot =
+                            self.lay.instances[i as usize].region_slots[p as usize].unwrap_or(0);
                         let sv = self.slot(slot);
                         let kv = self.konst(idx);
                         let eq = self.bin(BinOp::Eq, sv, kv);
@@ -152,8 +169,14 @@ impl<'m> Lowerer<'m> {
                 if s == 0 || node.is_region {
                     continue;
                 }
-                self.covers.push(Cover { instance: i, kind: CoverKind::State(s as StateId), label: node.path.clone(), span: node.span });
-                self.state_covers.insert((i, s as StateId), self.covers.len() as CoverId - 1);
+                self.covers.push(Cover {
+                    instance: i,
+                    kind: CoverKind::State(s as StateId),
+                    label: node.path.clone(),
+                    span: node.span,
+                });
+                self.state_covers
+                    .insert((i, s as StateId), self.covers.len() as CoverId - 1);
             }
         }
         let mut init_calls = Vec::new();
@@ -166,11 +189,24 @@ impl<'m> Lowerer<'m> {
         let started = self.lay.started;
         let started_e = self.slot(started);
         let one = self.konst(1);
-        let mut init_block = vec![Stmt::Assign { slot: started, expr: one, site: None }];
+        let mut init_block = vec![Stmt::Assign {
+            slot: started,
+            expr: one,
+            site: None,
+        }];
         init_block.extend(init_calls);
-        let mut step = vec![Stmt::If { cond: started_e, then: step_calls, otherwise: init_block }];
+        let mut step = vec![Stmt::If {
+            cond: started_e,
+            then: step_calls,
+            otherwise: init_block,
+        }];
         step.extend(self.monitors());
-        let assumes = self.sys.assumes.iter().map(|a| self.expr(a, None)).collect();
+        let assumes = self
+            .sys
+            .assumes
+            .iter()
+            .map(|a| self.expr(a, None))
+            .collect();
         let properties = self.properties();
         Program {
             name: self.sys.name.clone(),
@@ -187,6 +223,8 @@ impl<'m> Lowerer<'m> {
             assumes,
             properties,
             started,
+            n_locals: self.locals.len(),
+            code: std::sync::OnceLock::new(),
         }
     }
 
@@ -206,14 +244,26 @@ impl<'m> Lowerer<'m> {
             match var.kind {
                 VarKind::Output => {
                     let z = self.konst(0);
-                    prologue.push(Stmt::Assign { slot, expr: z, site: None });
+                    prologue.push(Stmt::Assign {
+                        slot,
+                        expr: z,
+                        site: None,
+                    });
                 }
                 VarKind::Local => {
                     if let Some(p) = self.lay.pending[i as usize][v] {
                         let pe = self.slot(p);
-                        prologue.push(Stmt::Assign { slot, expr: pe, site: None });
+                        prologue.push(Stmt::Assign {
+                            slot,
+                            expr: pe,
+                            site: None,
+                        });
                         let z = self.konst(0);
-                        prologue.push(Stmt::Assign { slot: p, expr: z, site: None });
+                        prologue.push(Stmt::Assign {
+                            slot: p,
+                            expr: z,
+                            site: None,
+                        });
                     }
                 }
                 VarKind::Input => {}
@@ -221,7 +271,11 @@ impl<'m> Lowerer<'m> {
         }
         for a in self.lay.aborts[i as usize].clone().into_iter().flatten() {
             let z = self.konst(0);
-            prologue.push(Stmt::Assign { slot: a, expr: z, site: None });
+            prologue.push(Stmt::Assign {
+                slot: a,
+                expr: z,
+                site: None,
+            });
         }
         // R1: tick 0 is the default entry of the root.
         let mut init_body = prologue.clone();
@@ -247,7 +301,11 @@ impl<'m> Lowerer<'m> {
             let inc = self.bin(BinOp::Add, te, one);
             let mx = self.konst(max);
             let sat = self.node(Node::Min(inc, mx));
-            out.push(Stmt::Assign { slot: t, expr: sat, site: None });
+            out.push(Stmt::Assign {
+                slot: t,
+                expr: sat,
+                site: None,
+            });
         }
         let ctx = Ctx { inst: i, state: s };
         let mut rest = self.stmts(&node.during, ctx);
@@ -257,7 +315,11 @@ impl<'m> Lowerer<'m> {
         for &t in node.transitions.iter().rev() {
             let cond = self.enabled(i, t);
             let fire = self.fire(i, t);
-            chain = vec![Stmt::If { cond, then: fire, otherwise: chain }];
+            chain = vec![Stmt::If {
+                cond,
+                then: fire,
+                otherwise: chain,
+            }];
         }
         out.extend(chain);
         out
@@ -283,7 +345,11 @@ impl<'m> Lowerer<'m> {
                             // R6: skip later regions once a transition has left this state.
                             let ae = self.slot(a);
                             let not = self.node(Node::Unary(UnOp::Not, ae));
-                            out.push(Stmt::If { cond: not, then: body, otherwise: Vec::new() });
+                            out.push(Stmt::If {
+                                cond: not,
+                                then: body,
+                                otherwise: Vec::new(),
+                            });
                         }
                     }
                 }
@@ -314,7 +380,10 @@ impl<'m> Lowerer<'m> {
                 }
             }
         }
-        let ctx = Ctx { inst: i, state: tr.source };
+        let ctx = Ctx {
+            inst: i,
+            state: tr.source,
+        };
         if let Some(g) = &tr.guard {
             parts.push(self.expr(g, Some(ctx)));
         }
@@ -363,19 +432,46 @@ impl<'m> Lowerer<'m> {
     fn fire(&mut self, i: u32, t: u32) -> Vec<Stmt> {
         let chart = self.chart(i);
         let tr = &chart.transitions[t as usize];
-        let ctx = Ctx { inst: i, state: tr.source };
+        let ctx = Ctx {
+            inst: i,
+            state: tr.source,
+        };
         let label = transition_label(chart, tr);
-        self.covers.push(Cover { instance: i, kind: CoverKind::Transition(t), label, span: tr.span });
+        self.covers.push(Cover {
+            instance: i,
+            kind: CoverKind::Transition(t),
+            label,
+            span: tr.span,
+        });
         let cover = self.covers.len() as CoverId - 1;
         let action = self.stmts(&tr.action, ctx);
         let mut out = vec![Stmt::Cover(cover)];
         let mut branch_counter = 0;
-        out.extend(self.fire_dest(i, t, tr.source, &tr.dest, action, ctx, tr.span, &mut branch_counter));
+        out.extend(self.fire_dest(
+            i,
+            t,
+            tr.source,
+            &tr.dest,
+            action,
+            ctx,
+            tr.span,
+            &mut branch_counter,
+        ));
         out
     }
 
     #[allow(clippy::too_many_arguments)] // reason: the recursion threads the same context through every branch
-    fn fire_dest(&mut self, i: u32, t: u32, source: StateId, d: &Dest, actions: Vec<Stmt>, ctx: Ctx, span: Span, counter: &mut u32) -> Vec<Stmt> {
+    fn fire_dest(
+        &mut self,
+        i: u32,
+        t: u32,
+        source: StateId,
+        d: &Dest,
+        actions: Vec<Stmt>,
+        ctx: Ctx,
+        span: Span,
+        counter: &mut u32,
+    ) -> Vec<Stmt> {
         match d {
             Dest::Internal => actions,
             Dest::State(target) => self.transition_path(i, source, *target, actions, span),
@@ -389,7 +485,11 @@ impl<'m> Lowerer<'m> {
                     self.covers.push(Cover {
                         instance: i,
                         kind: CoverKind::Branch(t, index),
-                        label: format!("{} [branch {}]", transition_label(chart, &chart.transitions[t as usize]), index + 1),
+                        label: format!(
+                            "{} [branch {}]",
+                            transition_label(chart, &chart.transitions[t as usize]),
+                            index + 1
+                        ),
                         span: b.span,
                     });
                     let cover = self.covers.len() as CoverId - 1;
@@ -411,7 +511,11 @@ impl<'m> Lowerer<'m> {
                 for (cond, body) in arms.into_iter().rev() {
                     chain = match cond {
                         None => body,
-                        Some(c) => vec![Stmt::If { cond: c, then: body, otherwise: chain }],
+                        Some(c) => vec![Stmt::If {
+                            cond: c,
+                            then: body,
+                            otherwise: chain,
+                        }],
                     };
                 }
                 chain
@@ -420,7 +524,14 @@ impl<'m> Lowerer<'m> {
     }
 
     /// Exit from `source`'s side of the scope, run `actions`, enter down to `target`.
-    fn transition_path(&mut self, i: u32, source: StateId, target: StateId, actions: Vec<Stmt>, span: Span) -> Vec<Stmt> {
+    fn transition_path(
+        &mut self,
+        i: u32,
+        source: StateId,
+        target: StateId,
+        actions: Vec<Stmt>,
+        span: Span,
+    ) -> Vec<Stmt> {
         let chart = self.chart(i);
         let src_chain = chart.ancestry(source);
         let tgt_chain = chart.ancestry(target);
@@ -450,7 +561,11 @@ impl<'m> Lowerer<'m> {
         for n in &src_chain[k + 1..] {
             if let Some(a) = self.lay.aborts[i as usize][*n as usize] {
                 let one = self.konst(1);
-                out.push(Stmt::Assign { slot: a, expr: one, site: None });
+                out.push(Stmt::Assign {
+                    slot: a,
+                    expr: one,
+                    site: None,
+                });
             }
         }
         let exit = self.exit_proc(i, exit_top);
@@ -468,7 +583,11 @@ impl<'m> Lowerer<'m> {
             return *p;
         }
         let chart = self.chart(i);
-        let name = format!("exit_{}_{}", sanitize(&self.sys.instances[i as usize].name), sanitize(&chart.states[s as usize].path));
+        let name = format!(
+            "exit_{}_{}",
+            sanitize(&self.sys.instances[i as usize].name),
+            sanitize(&chart.states[s as usize].path)
+        );
         let id = self.new_proc(name);
         self.exit_procs.insert((i, s), id);
         let mut body = Vec::new();
@@ -484,7 +603,11 @@ impl<'m> Lowerer<'m> {
         body.extend(self.stmts(&chart.states[s as usize].exit, Ctx { inst: i, state: s }));
         if let Some((t, _)) = self.lay.timers[i as usize][s as usize] {
             let z = self.konst(0);
-            body.push(Stmt::Assign { slot: t, expr: z, site: None });
+            body.push(Stmt::Assign {
+                slot: t,
+                expr: z,
+                site: None,
+            });
         }
         self.procs[id as usize].body = body;
         id
@@ -492,15 +615,25 @@ impl<'m> Lowerer<'m> {
 
     fn exit_or(&mut self, i: u32, n: StateId) -> Vec<Stmt> {
         let chart = self.chart(i);
-        let NodeKind::Or { children, initial, .. } = chart.states[n as usize].kind.clone() else {
+        let NodeKind::Or {
+            children, initial, ..
+        } = chart.states[n as usize].kind.clone()
+        else {
             return Vec::new();
         };
         let slot = self.region_slot(i, n);
-        let cases = children.iter().map(|c| vec![Stmt::Call(self.exit_proc(i, *c))]).collect();
+        let cases = children
+            .iter()
+            .map(|c| vec![Stmt::Call(self.exit_proc(i, *c))])
+            .collect();
         let mut out = vec![Stmt::Switch { slot, cases }];
         if !self.remembers(chart, n) {
             let v = self.konst(initial as i64);
-            out.push(Stmt::Assign { slot, expr: v, site: None });
+            out.push(Stmt::Assign {
+                slot,
+                expr: v,
+                site: None,
+            });
         }
         out
     }
@@ -508,12 +641,19 @@ impl<'m> Lowerer<'m> {
     /// True when an OR node's active child must survive its exit (history on it, or deep
     /// history above it).
     fn remembers(&self, chart: &Chart, n: StateId) -> bool {
-        if let NodeKind::Or { history: Some(_), .. } = chart.states[n as usize].kind {
+        if let NodeKind::Or {
+            history: Some(_), ..
+        } = chart.states[n as usize].kind
+        {
             return true;
         }
         let mut cur = chart.states[n as usize].parent;
         while let Some(p) = cur {
-            if let NodeKind::Or { history: Some(HistoryKind::Deep), .. } = chart.states[p as usize].kind {
+            if let NodeKind::Or {
+                history: Some(HistoryKind::Deep),
+                ..
+            } = chart.states[p as usize].kind
+            {
                 return true;
             }
             cur = chart.states[p as usize].parent;
@@ -523,7 +663,9 @@ impl<'m> Lowerer<'m> {
 
     /// Enter the states of `chain` (outermost first), then the last one's default entry.
     fn enter_chain(&mut self, i: u32, chain: &[StateId]) -> Vec<Stmt> {
-        let Some((&x, rest)) = chain.split_first() else { return Vec::new() };
+        let Some((&x, rest)) = chain.split_first() else {
+            return Vec::new();
+        };
         let chart = self.chart(i);
         let mut out = Vec::new();
         if let Some(p) = chart.states[x as usize].parent {
@@ -531,7 +673,11 @@ impl<'m> Lowerer<'m> {
                 let idx = children.iter().position(|c| *c == x).unwrap_or(0) as i64;
                 let slot = self.region_slot(i, p);
                 let v = self.konst(idx);
-                out.push(Stmt::Assign { slot, expr: v, site: None });
+                out.push(Stmt::Assign {
+                    slot,
+                    expr: v,
+                    site: None,
+                });
             }
         }
         out.extend(self.entry_of(i, x));
@@ -594,7 +740,11 @@ impl<'m> Lowerer<'m> {
                 .iter()
                 .map(|r| Stmt::Call(self.enter_default(i, *r, deep)))
                 .collect(),
-            NodeKind::Or { children, initial, history } => {
+            NodeKind::Or {
+                children,
+                initial,
+                history,
+            } => {
                 let slot = self.region_slot(i, s);
                 if deep || history.is_some() {
                     let child_deep = deep || history == Some(HistoryKind::Deep);
@@ -604,9 +754,16 @@ impl<'m> Lowerer<'m> {
                         .collect();
                     vec![Stmt::Switch { slot, cases }]
                 } else {
-                    let mut out = self.stmts(&chart.states[s as usize].initial_action, Ctx { inst: i, state: s });
+                    let mut out = self.stmts(
+                        &chart.states[s as usize].initial_action,
+                        Ctx { inst: i, state: s },
+                    );
                     let v = self.konst(initial as i64);
-                    out.push(Stmt::Assign { slot, expr: v, site: None });
+                    out.push(Stmt::Assign {
+                        slot,
+                        expr: v,
+                        site: None,
+                    });
                     out.push(Stmt::Call(self.enter_default(i, children[initial], false)));
                     out
                 }
@@ -622,7 +779,12 @@ impl<'m> Lowerer<'m> {
 
     fn stmt(&mut self, s: &m::Stmt, ctx: Ctx) -> Stmt {
         match s {
-            m::Stmt::Assign { var, value, checked, span } => {
+            m::Stmt::Assign {
+                var,
+                value,
+                checked,
+                span,
+            } => {
                 let slot = self.lay.instances[ctx.inst as usize].var_slots[*var as usize];
                 let expr = self.expr(value, Some(ctx));
                 let site = checked.then(|| {
@@ -637,9 +799,17 @@ impl<'m> Lowerer<'m> {
                     Some(p) => p,
                     None => self.lay.instances[ctx.inst as usize].var_slots[*event as usize],
                 };
-                Stmt::Assign { slot, expr: one, site: None }
+                Stmt::Assign {
+                    slot,
+                    expr: one,
+                    site: None,
+                }
             }
-            m::Stmt::If { cond, then, otherwise } => Stmt::If {
+            m::Stmt::If {
+                cond,
+                then,
+                otherwise,
+            } => Stmt::If {
                 cond: self.expr(cond, Some(ctx)),
                 then: self.stmts(then, ctx),
                 otherwise: self.stmts(otherwise, ctx),
@@ -666,7 +836,20 @@ impl<'m> Lowerer<'m> {
             }
             m::ExprKind::Binary(op, a, b) => {
                 let (a, b) = (self.expr(a, ctx), self.expr(b, ctx));
-                let site = if matches!(op, BinOp::And | BinOp::Or | BinOp::Eq | BinOp::Ne | BinOp::Lt | BinOp::Le | BinOp::Gt | BinOp::Ge | BinOp::BitAnd | BinOp::BitOr | BinOp::BitXor) {
+                let site = if matches!(
+                    op,
+                    BinOp::And
+                        | BinOp::Or
+                        | BinOp::Eq
+                        | BinOp::Ne
+                        | BinOp::Lt
+                        | BinOp::Le
+                        | BinOp::Gt
+                        | BinOp::Ge
+                        | BinOp::BitAnd
+                        | BinOp::BitOr
+                        | BinOp::BitXor
+                ) {
                     u32::MAX
                 } else {
                     self.site(ctx, e.span, format!("`{}`", op_symbol(*op)))
@@ -688,6 +871,17 @@ impl<'m> Lowerer<'m> {
                     }
                 }
             }
+            m::ExprKind::Let(id, v, b) => {
+                let n = self.locals.len() as u32;
+                let l = *self.locals.entry(*id).or_insert(n);
+                let (v, b) = (self.expr(v, ctx), self.expr(b, ctx));
+                self.node(Node::Let(l, v, b))
+            }
+            m::ExprKind::Local(id) => {
+                let n = self.locals.len() as u32;
+                let l = *self.locals.entry(*id).or_insert(n);
+                self.node(Node::Local(l))
+            }
             m::ExprKind::Check(a, lo, hi) => {
                 let a = self.expr(a, ctx);
                 let site = self.site(ctx, e.span, format!("value in range {lo}..{hi}"));
@@ -702,8 +896,15 @@ impl<'m> Lowerer<'m> {
     fn monitors(&mut self) -> Vec<Stmt> {
         let mut out = Vec::new();
         for (p, prop) in self.sys.properties.iter().enumerate() {
-            let m::PropertyKind::Respond { trigger, response, .. } = &prop.kind else { continue };
-            let Some(mon) = self.lay.monitors[p] else { continue };
+            let m::PropertyKind::Respond {
+                trigger, response, ..
+            } = &prop.kind
+            else {
+                continue;
+            };
+            let Some(mon) = self.lay.monitors[p] else {
+                continue;
+            };
             let r = self.expr(response, None);
             let t = self.expr(trigger, None);
             let me = self.slot(mon);
@@ -716,11 +917,27 @@ impl<'m> Lowerer<'m> {
             // respond: 0 = no obligation; k = the oldest unanswered trigger was k-1 ticks ago.
             out.push(Stmt::If {
                 cond: r,
-                then: vec![Stmt::Assign { slot: mon, expr: zero, site: None }],
+                then: vec![Stmt::Assign {
+                    slot: mon,
+                    expr: zero,
+                    site: None,
+                }],
                 otherwise: vec![Stmt::If {
                     cond: waiting,
-                    then: vec![Stmt::Assign { slot: mon, expr: inc, site: None }],
-                    otherwise: vec![Stmt::If { cond: t, then: vec![Stmt::Assign { slot: mon, expr: one, site: None }], otherwise: Vec::new() }],
+                    then: vec![Stmt::Assign {
+                        slot: mon,
+                        expr: inc,
+                        site: None,
+                    }],
+                    otherwise: vec![Stmt::If {
+                        cond: t,
+                        then: vec![Stmt::Assign {
+                            slot: mon,
+                            expr: one,
+                            site: None,
+                        }],
+                        otherwise: Vec::new(),
+                    }],
                 }],
             });
         }
@@ -735,25 +952,43 @@ impl<'m> Lowerer<'m> {
                     expr: self.expr(expr, None),
                     assuming: assuming.as_ref().map(|a| self.expr(a, None)),
                 },
-                m::PropertyKind::Reachable { expr } => PropertyKind::Reachable { expr: self.expr(expr, None) },
+                m::PropertyKind::Reachable { expr } => PropertyKind::Reachable {
+                    expr: self.expr(expr, None),
+                },
                 m::PropertyKind::Respond { within, .. } => {
-                    let Some(mon) = self.lay.monitors[p] else { continue };
+                    let Some(mon) = self.lay.monitors[p] else {
+                        continue;
+                    };
                     let me = self.slot(mon);
                     let w = self.konst(*within);
-                    PropertyKind::Respond { monitor: mon, within: *within, ok: self.bin(BinOp::Le, me, w) }
+                    PropertyKind::Respond {
+                        monitor: mon,
+                        within: *within,
+                        ok: self.bin(BinOp::Le, me, w),
+                    }
                 }
             };
-            out.push(Property { name: prop.name.clone(), kind, span: prop.span });
+            out.push(Property {
+                name: prop.name.clone(),
+                kind,
+                span: prop.span,
+            });
         }
         for i in 0..self.sys.instances.len() as u32 {
             let chart = self.chart(i);
             if chart.role != m::ChartRole::Observer {
                 continue;
             }
-            let Some(err) = chart.state_by_path("error") else { continue };
+            let Some(err) = chart.state_by_path("error") else {
+                continue;
+            };
             let active = self.lay.instances[i as usize].active[err as usize];
             let ok = self.node(Node::Unary(UnOp::Not, active));
-            out.push(Property { name: chart.name.clone(), kind: PropertyKind::Observer { instance: i, ok }, span: chart.span });
+            out.push(Property {
+                name: chart.name.clone(),
+                kind: PropertyKind::Observer { instance: i, ok },
+                span: chart.span,
+            });
         }
         out
     }
@@ -784,7 +1019,10 @@ fn op_symbol(op: BinOp) -> &'static str {
 
 /// A name usable as an identifier in generated code.
 pub fn sanitize(s: &str) -> String {
-    let out: String = s.chars().map(|c| if c.is_ascii_alphanumeric() { c } else { '_' }).collect();
+    let out: String = s
+        .chars()
+        .map(|c| if c.is_ascii_alphanumeric() { c } else { '_' })
+        .collect();
     if out.is_empty() {
         "root".into()
     } else {

@@ -116,7 +116,10 @@ impl ValueKind {
         match self {
             ValueKind::Bool => (v != 0).to_string(),
             ValueKind::Int => v.to_string(),
-            ValueKind::Enum(names) => names.get(v as usize).cloned().unwrap_or_else(|| v.to_string()),
+            ValueKind::Enum(names) => names
+                .get(v as usize)
+                .cloned()
+                .unwrap_or_else(|| v.to_string()),
         }
     }
 
@@ -143,7 +146,10 @@ fn parse_int(text: &str) -> Option<i64> {
         None => (false, text),
     };
     let digits = digits.replace('_', "");
-    let v = if let Some(h) = digits.strip_prefix("0x").or_else(|| digits.strip_prefix("0X")) {
+    let v = if let Some(h) = digits
+        .strip_prefix("0x")
+        .or_else(|| digits.strip_prefix("0X"))
+    {
         i64::from_str_radix(h, 16).ok()?
     } else if let Some(b) = digits.strip_prefix("0b") {
         i64::from_str_radix(b, 2).ok()?
@@ -182,6 +188,10 @@ pub enum Node {
     Abs(ExprId, SiteId),
     /// The value must lie in `lo..=hi`, else a run-time error at the site.
     Check(ExprId, i64, i64, SiteId),
+    /// Evaluate the value into local `l`, then the body (an inlined function argument).
+    Let(u32, ExprId, ExprId),
+    /// The value of local `l`, bound by the enclosing `Let`.
+    Local(u32),
 }
 
 /// A statement.
@@ -371,9 +381,18 @@ pub struct Program {
     pub properties: Vec<Property>,
     /// The `Started` slot.
     pub started: SlotId,
+    /// Number of expression locals (see [`Node::Let`]).
+    pub n_locals: usize,
+    /// The interpreter's compiled form, built on first use.
+    pub(crate) code: std::sync::OnceLock<crate::vm::Code>,
 }
 
 impl Program {
+    /// The compiled form the interpreter runs (built once).
+    pub(crate) fn code(&self) -> &crate::vm::Code {
+        self.code.get_or_init(|| crate::vm::Code::compile(self))
+    }
+
     /// The slots of the persistent state.
     pub fn state_slots(&self) -> &[Slot] {
         &self.slots[..self.n_state]

@@ -31,6 +31,8 @@ pub(crate) struct ExprChecker<'g> {
     pub globals: &'g Globals,
     /// Where diagnostics go.
     pub sink: Sink,
+    /// Next id for a [`ExprKind::Let`] binding.
+    pub next_local: u32,
 }
 
 fn error_expr(span: Span) -> Expr {
@@ -55,7 +57,12 @@ pub(crate) fn type_name(g: &Globals, ty: Type) -> String {
 
 impl<'g> ExprChecker<'g> {
     fn bounds(&self, ty: Type) -> (i64, i64) {
-        ty.bounds(|e| self.globals.enums.get(e as usize).map_or(1, |d| d.variants.len()))
+        ty.bounds(|e| {
+            self.globals
+                .enums
+                .get(e as usize)
+                .map_or(1, |d| d.variants.len())
+        })
     }
 
     /// Check an expression that must have a boolean type.
@@ -93,6 +100,10 @@ impl<'g> ExprChecker<'g> {
     /// Evaluate an expression that must be constant (array sizes, bounds, delays, priorities).
     pub fn const_value(&mut self, scope: &Scope, e: &ast::Expr) -> Option<i64> {
         let x = self.check(scope, e);
+        if is_placeholder(&x) {
+            // An error inside was already reported; do not invent a value to check further.
+            return None;
+        }
         match x.kind {
             ExprKind::Const(v) => Some(v),
             _ => {
@@ -151,7 +162,11 @@ impl<'g> ExprChecker<'g> {
                         self.expect_int(&a, "`~`");
                         let (lo, hi) = self.bounds(a.ty);
                         Type::Int {
-                            lo: lo.checked_neg().unwrap_or(i64::MAX).saturating_sub(1).min(!hi),
+                            lo: lo
+                                .checked_neg()
+                                .unwrap_or(i64::MAX)
+                                .saturating_sub(1)
+                                .min(!hi),
                             hi: (!lo).max(!hi),
                         }
                     }
@@ -229,15 +244,27 @@ impl<'g> ExprChecker<'g> {
             Eq | Ne => {
                 if !a.ty.compatible(b.ty) && !is_placeholder(a) && !is_placeholder(b) {
                     let (an, bn) = (type_name(self.globals, a.ty), type_name(self.globals, b.ty));
-                    self.sink.push(
-                        Diagnostic::error(
-                            "E0103",
-                            format!("cannot compare `{an}` with `{bn}`"),
-                            span,
-                        )
-                        .with_secondary(a.span, format!("this is a `{an}`"))
-                        .with_secondary(b.span, format!("this is a `{bn}`")),
-                    );
+                    let mut d = Diagnostic::error(
+                        "E0103",
+                        format!("cannot compare `{an}` with `{bn}`"),
+                        span,
+                    )
+                    .with_label("different types")
+                    .with_secondary(a.span, format!("this is a `{an}`"))
+                    .with_secondary(b.span, format!("this is a `{bn}`"));
+                    if let Some(Type::Enum(e)) = [a.ty, b.ty]
+                        .into_iter()
+                        .find(|t| matches!(t, Type::Enum(_)))
+                    {
+                        if let Some(def) = self.globals.enums.get(e as usize) {
+                            d = d.with_hint(format!(
+                                "enums are not numbers; compare with a literal of `{}`: {}",
+                                def.name,
+                                def.variants.join(", ")
+                            ));
+                        }
+                    }
+                    self.sink.push(d);
                 }
                 Type::Bool
             }
@@ -400,22 +427,33 @@ impl<'g> ExprChecker<'g> {
         }
         let Some((index, decl)) = self.globals.fns.get(&func.name) else {
             self.sink.push(
-                Diagnostic::error("E0101", format!("unknown function `{}`", func.name), func.span)
-                    .with_label("not declared")
-                    .with_hint("the built-in functions are `min`, `max` and `abs`"),
+                Diagnostic::error(
+                    "E0101",
+                    format!("unknown function `{}`", func.name),
+                    func.span,
+                )
+                .with_label("not declared")
+                .with_hint("the built-in functions are `min`, `max` and `abs`"),
             );
             return error_expr(span);
         };
         if *index >= scope.fn_limit {
-            self.sink.push(
-                Diagnostic::error(
-                    "E0113",
-                    format!("`{}` is declared after the function calling it", func.name),
-                    func.span,
-                )
-                .with_label("called here")
-                .with_hint("functions may only call functions declared before them (no recursion)"),
-            );
+            // A call inside the called function's own declaration is recursion.
+            let recursive = decl.span.start <= func.span.start && func.span.end <= decl.span.end;
+            let d = if recursive {
+                Diagnostic::error("E0113", format!("`{}` calls itself", func.name), func.span)
+                    .with_label("recursive call")
+                    .with_hint("functions are inlined, so they cannot be recursive")
+            } else {
+                Diagnostic::error("E0113", format!("`{}` is called before its declaration", func.name), func.span)
+                    .with_label("called here")
+                    .with_secondary(decl.name.span, "declared here")
+                    .with_hint(format!(
+                        "move `fn {}` above this use: a function or constant may only call functions declared before it (so there is no recursion)",
+                        func.name
+                    ))
+            };
+            self.sink.push(d);
             return error_expr(span);
         }
         if checked.len() != decl.params.len() {
@@ -442,22 +480,57 @@ impl<'g> ExprChecker<'g> {
             locals: Vec::new(),
             fn_limit: *index,
         };
+        // Arguments that are not trivial are evaluated once, into a `Let`-bound local.
+        let mut bindings: Vec<(u32, Expr)> = Vec::new();
         for (p, a) in decl.params.iter().zip(checked) {
             let pty = self.resolve_type(&p.ty);
-            let a = self.coerce(a, pty, "argument");
-            inner.locals.push((p.name.name.clone(), a));
+            let a = self.coerce(
+                a,
+                pty,
+                &format!("argument `{}` of `{}`", p.name.name, func.name),
+            );
+            let bound = self.bind(a, &mut bindings);
+            inner.locals.push((p.name.name.clone(), bound));
         }
         self.sink.muted += 1;
         for (name, e) in &decl.lets {
             let v = self.check(&inner, e);
-            inner.locals.push((name.name.clone(), v));
+            let bound = self.bind(v, &mut bindings);
+            inner.locals.push((name.name.clone(), bound));
         }
         let body = self.check(&inner, &decl.body);
         self.sink.muted -= 1;
         let rty = self.resolve_type(&decl.ret);
-        let mut r = self.coerce(body, rty, "result");
+        let mut r = self.coerce(body, rty, &format!("the result of `{}`", func.name));
+        for (id, value) in bindings.into_iter().rev() {
+            let ty = r.ty;
+            r = Expr {
+                kind: ExprKind::Let(id, Box::new(value), Box::new(r)),
+                ty,
+                span,
+            };
+        }
         r.span = span;
         r
+    }
+
+    /// The expression to substitute for a parameter: `x` itself when it is cheap to repeat,
+    /// else a local bound to it (recorded in `bindings`).
+    fn bind(&mut self, x: Expr, bindings: &mut Vec<(u32, Expr)>) -> Expr {
+        match x.kind {
+            ExprKind::Const(_) | ExprKind::Var(_) | ExprKind::Local(_) => x,
+            _ => {
+                let id = self.next_local;
+                self.next_local += 1;
+                let local = Expr {
+                    kind: ExprKind::Local(id),
+                    ty: x.ty,
+                    span: x.span,
+                };
+                bindings.push((id, x));
+                local
+            }
+        }
     }
 
     /// Make `x` usable where `ty` is expected: check compatibility, and wrap integers whose
@@ -469,8 +542,12 @@ impl<'g> ExprChecker<'g> {
         if !x.ty.compatible(ty) {
             let (xn, tn) = (type_name(self.globals, x.ty), type_name(self.globals, ty));
             self.sink.push(
-                Diagnostic::error("E0103", format!("mismatched types in {what}: expected `{tn}`, found `{xn}`"), x.span)
-                    .with_label(format!("this is a `{xn}`")),
+                Diagnostic::error(
+                    "E0103",
+                    format!("mismatched types in {what}: expected `{tn}`, found `{xn}`"),
+                    x.span,
+                )
+                .with_label(format!("this is a `{xn}`")),
             );
             return Expr { ty, ..x };
         }
@@ -480,7 +557,7 @@ impl<'g> ExprChecker<'g> {
                     self.sink.push(
                         Diagnostic::error(
                             "E0104",
-                            format!("{what} {v} is out of range {tl}..{th}"),
+                            format!("{what} is out of range: {v} is not within {tl}..{th}"),
                             x.span,
                         )
                         .with_label(format!("must be within {tl}..{th}")),
@@ -534,10 +611,17 @@ impl<'g> ExprChecker<'g> {
             ast::TypeExpr::Named(id) => match self.globals.enum_ids.get(&id.name) {
                 Some(e) => Type::Enum(*e),
                 None => {
+                    let hint = match crate::suggest::closest(
+                        &id.name,
+                        self.globals.enum_ids.keys().map(String::as_str),
+                    ) {
+                        Some(e) => format!("did you mean `{e}`?"),
+                        None => "types are `bool`, `int[lo..hi]` or a declared enum".to_string(),
+                    };
                     self.sink.push(
                         Diagnostic::error("E0101", format!("unknown type `{}`", id.name), id.span)
                             .with_label("not a declared enum")
-                            .with_hint("types are `bool`, `int[lo..hi]` or a declared enum"),
+                            .with_hint(hint),
                     );
                     Type::UNBOUNDED
                 }
@@ -651,23 +735,29 @@ impl<'g> ExprChecker<'g> {
                                 span,
                             };
                         }
-                        self.sink.push(
-                            Diagnostic::error(
-                                "E0101",
-                                format!("chart `{}` has no variable `{vname}`", chart.name),
-                                segs[1].name.span,
-                            )
-                            .with_label("unknown variable"),
-                        );
+                        let mut d = Diagnostic::error(
+                            "E0101",
+                            format!("chart `{}` has no variable `{vname}`", chart.name),
+                            segs[1].name.span,
+                        )
+                        .with_label("unknown variable");
+                        if chart.state_by_path(vname).is_some() {
+                            d = d.with_hint(format!(
+                                "`{vname}` is a state: test it with `in({}.{vname})`",
+                                first.name.name
+                            ));
+                        } else if let Some(c) = crate::suggest::closest(
+                            vname,
+                            chart.vars.iter().map(|v| v.name.as_str()),
+                        ) {
+                            d = d.with_hint(format!("did you mean `{c}`?"));
+                        }
+                        self.sink.push(d);
                         return error_expr(span);
                     }
                     self.sink.push(
-                        Diagnostic::error(
-                            "E0101",
-                            "expected `instance.variable`",
-                            span,
-                        )
-                        .with_hint("use `in(instance.state)` to test a state"),
+                        Diagnostic::error("E0101", "expected `instance.variable`", span)
+                            .with_hint("use `in(instance.state)` to test a state"),
                     );
                     return error_expr(span);
                 }
@@ -675,6 +765,17 @@ impl<'g> ExprChecker<'g> {
             }
         }
         let name = &first.name.name;
+        if segs.len() == 1 {
+            if let Some(decl) = self.globals.declared_consts.get(name) {
+                self.sink.push(
+                    Diagnostic::error("E0101", format!("constant `{name}` is used before its declaration"), first.name.span)
+                        .with_label("not declared yet")
+                        .with_secondary(*decl, "declared here")
+                        .with_hint(format!("move `const {name}` above this use: a constant sees only the constants declared before it")),
+                );
+                return error_expr(span);
+            }
+        }
         let mut d = Diagnostic::error("E0101", format!("unknown name `{name}`"), first.name.span)
             .with_label("not found in this scope");
         if let Some(s) = self.suggest(scope, name) {
@@ -713,7 +814,10 @@ impl<'g> ExprChecker<'g> {
                     self.sink.push(
                         Diagnostic::error(
                             "E0104",
-                            format!("index {i} out of range for `{}` (length {len})", seg.name.name),
+                            format!(
+                                "index {i} out of range for `{}` (length {len})",
+                                seg.name.name
+                            ),
                             e.span(),
                         )
                         .with_label(format!("must be within 0..{}", len - 1)),
@@ -781,18 +885,28 @@ impl<'g> ExprChecker<'g> {
                 self.sink.push(
                     Diagnostic::error(
                         "E0101",
-                        format!("chart `{}` has no state `{}`", chart.name, names[1..].join(".")),
+                        format!(
+                            "chart `{}` has no state `{}`",
+                            chart.name,
+                            names[1..].join(".")
+                        ),
                         p.span,
                     )
                     .with_label("unknown state")
-                    .with_hint("state paths start at the chart's top level, e.g. `in(inst.Go.Pause)`"),
+                    .with_hint(
+                        "state paths start at the chart's top level, e.g. `in(inst.Go.Pause)`",
+                    ),
                 );
                 return None;
             }
         }
-        let mut d = Diagnostic::error("E0101", format!("unknown state `{}`", names.join(".")), p.span)
-            .with_label("no such state")
-            .with_hint("state paths start at the chart's top level, e.g. `in(Go.Pause)`");
+        let mut d = Diagnostic::error(
+            "E0101",
+            format!("unknown state `{}`", names.join(".")),
+            p.span,
+        )
+        .with_label("no such state")
+        .with_hint("state paths start at the chart's top level, e.g. `in(Go.Pause)`");
         if let Some(chart) = scope.chart {
             let paths = chart.states.iter().map(|s| s.path.as_str());
             if let Some(s) = crate::suggest::closest(&names.join("."), paths) {

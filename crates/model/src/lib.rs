@@ -43,6 +43,7 @@ pub fn check(file: &ast::File) -> (Model, Vec<Diagnostic>) {
             diags: early,
             muted: 0,
         },
+        next_local: 1 << 20,
     };
 
     // Charts: hierarchy first (so `in()` can see every state), then actions and transitions.
@@ -70,8 +71,13 @@ pub fn check(file: &ast::File) -> (Model, Vec<Diagnostic>) {
         if let ast::Item::System(s) = item {
             if let Some(prev) = system_names.insert(s.name.name.clone(), s.name.span) {
                 ck.sink.push(
-                    Diagnostic::error("E0102", format!("system `{}` is declared twice", s.name.name), s.name.span)
-                        .with_secondary(prev, "first declared here"),
+                    Diagnostic::error(
+                        "E0102",
+                        format!("system `{}` is declared twice", s.name.name),
+                        s.name.span,
+                    )
+                    .with_label("second declaration")
+                    .with_secondary(prev, "first declared here"),
                 );
                 continue;
             }
@@ -132,9 +138,13 @@ fn collect_globals(file: &ast::File, g: &mut Globals, diags: &mut Vec<Diagnostic
     let mut declare = |name: &ast::Ident, diags: &mut Vec<Diagnostic>| -> bool {
         if let Some(prev) = names.insert(name.name.clone(), name.span) {
             diags.push(
-                Diagnostic::error("E0102", format!("`{}` is declared twice", name.name), name.span)
-                    .with_label("second declaration")
-                    .with_secondary(prev, "first declared here"),
+                Diagnostic::error(
+                    "E0102",
+                    format!("`{}` is declared twice", name.name),
+                    name.span,
+                )
+                .with_label("second declaration")
+                .with_secondary(prev, "first declared here"),
             );
             return false;
         }
@@ -153,19 +163,32 @@ fn collect_globals(file: &ast::File, g: &mut Globals, diags: &mut Vec<Diagnostic
                 for v in &e.variants {
                     if let Some(prev) = seen.insert(&v.name, v.span) {
                         diags.push(
-                            Diagnostic::error("E0102", format!("literal `{}` is declared twice", v.name), v.span)
-                                .with_secondary(prev, "first declared here"),
+                            Diagnostic::error(
+                                "E0102",
+                                format!("literal `{}` is declared twice", v.name),
+                                v.span,
+                            )
+                            .with_label("second declaration")
+                            .with_secondary(prev, "first declared here"),
                         );
                     }
                     g.literal_owners.entry(v.name.clone()).or_default().push(id);
                 }
                 if e.variants.is_empty() {
-                    diags.push(Diagnostic::error("E0114", format!("enum `{}` has no literals", e.name.name), e.name.span));
+                    diags.push(Diagnostic::error(
+                        "E0114",
+                        format!("enum `{}` has no literals", e.name.name),
+                        e.name.span,
+                    ));
                 }
                 g.enum_ids.insert(e.name.name.clone(), id);
                 g.enums.push(EnumDef {
                     name: e.name.name.clone(),
-                    variants: if e.variants.is_empty() { vec!["_".into()] } else { e.variants.iter().map(|v| v.name.clone()).collect() },
+                    variants: if e.variants.is_empty() {
+                        vec!["_".into()]
+                    } else {
+                        e.variants.iter().map(|v| v.name.clone()).collect()
+                    },
                 });
             }
             ast::Item::Chart(c) => {
@@ -175,15 +198,23 @@ fn collect_globals(file: &ast::File, g: &mut Globals, diags: &mut Vec<Diagnostic
                 chart_count += 1;
             }
             ast::Item::Const(c) => {
-                declare(&c.name, diags);
+                if declare(&c.name, diags) {
+                    g.declared_consts.insert(c.name.name.clone(), c.name.span);
+                }
             }
             ast::Item::Fn(f) => {
-                declare(&f.name, diags);
+                if declare(&f.name, diags) {
+                    let index = g.fns.len();
+                    g.fns.insert(f.name.name.clone(), (index, f.clone()));
+                }
             }
             ast::Item::System(_) => {}
             ast::Item::Tick(t) => {
                 if let Some(prev) = tick_seen {
-                    diags.push(Diagnostic::error("E0108", "the tick length is declared twice", t.span).with_secondary(prev, "first declared here"));
+                    diags.push(
+                        Diagnostic::error("E0108", "the tick length is declared twice", t.span)
+                            .with_secondary(prev, "first declared here"),
+                    );
                 }
                 tick_seen = Some(t.span);
             }
@@ -192,14 +223,26 @@ fn collect_globals(file: &ast::File, g: &mut Globals, diags: &mut Vec<Diagnostic
 }
 
 fn check_consts_and_fns(file: &ast::File, g: &mut Globals, diags: &mut Vec<Diagnostic>) {
-    // Constants and functions are checked in textual order; each sees only earlier ones.
+    // Constants and functions are checked in textual order; each sees only earlier constants
+    // and may call only earlier functions.
+    let mut fns_before = 0;
     for item in &file.items {
         let view = g.clone();
         let mut sub = ExprChecker {
             globals: &view,
-            sink: Sink { diags: Vec::new(), muted: 0 },
+            sink: Sink {
+                diags: Vec::new(),
+                muted: 0,
+            },
+            next_local: 0,
         };
-        let empty = Scope { chart: None, instances: None, charts: &[], locals: Vec::new(), fn_limit: usize::MAX };
+        let empty = Scope {
+            chart: None,
+            instances: None,
+            charts: &[],
+            locals: Vec::new(),
+            fn_limit: fns_before,
+        };
         match item {
             ast::Item::Const(c) => {
                 let x = sub.check(&empty, &c.value);
@@ -211,23 +254,46 @@ fn check_consts_and_fns(file: &ast::File, g: &mut Globals, diags: &mut Vec<Diagn
                 let value = match x.kind {
                     ExprKind::Const(v) => v,
                     _ => {
-                        sub.sink.push(Diagnostic::error("E0105", "a constant needs a constant value", c.value.span()).with_label("depends on variables"));
+                        sub.sink.push(
+                            Diagnostic::error(
+                                "E0105",
+                                "a constant needs a constant value",
+                                c.value.span(),
+                            )
+                            .with_label("depends on variables"),
+                        );
                         0
                     }
                 };
                 let ty = if ty.is_int() { Type::UNBOUNDED } else { ty };
-                g.consts.insert(c.name.name.clone(), (ty, value, c.name.span));
+                g.consts
+                    .insert(c.name.name.clone(), (ty, value, c.name.span));
                 g.const_order.push(c.name.name.clone());
             }
             ast::Item::Fn(f) => {
-                let index = g.fns.len();
+                // The index entered by `collect_globals` (a duplicate keeps the first one's).
+                let index = g.fns.get(&f.name.name).map_or(fns_before, |(i, _)| *i);
+                fns_before = fns_before.max(index + 1);
                 // Check the body once with opaque parameters, to report its errors here.
-                let mut scope = Scope { chart: None, instances: None, charts: &[], locals: Vec::new(), fn_limit: index };
+                let mut scope = Scope {
+                    chart: None,
+                    instances: None,
+                    charts: &[],
+                    locals: Vec::new(),
+                    fn_limit: index,
+                };
                 for (i, p) in f.params.iter().enumerate() {
                     let ty = sub.resolve_type(&p.ty);
                     scope.locals.push((
                         p.name.name.clone(),
-                        Expr { kind: ExprKind::Var(VarRef { instance: Some(u32::MAX), var: i as VarId }), ty, span: p.name.span },
+                        Expr {
+                            kind: ExprKind::Var(VarRef {
+                                instance: Some(u32::MAX),
+                                var: i as VarId,
+                            }),
+                            ty,
+                            span: p.name.span,
+                        },
                     ));
                 }
                 for (name, e) in &f.lets {
@@ -237,7 +303,6 @@ fn check_consts_and_fns(file: &ast::File, g: &mut Globals, diags: &mut Vec<Diagn
                 let body = sub.check(&scope, &f.body);
                 let rty = sub.resolve_type(&f.ret);
                 let _ = sub.coerce(body, rty, "function result");
-                g.fns.insert(f.name.name.clone(), (index, f.clone()));
             }
             ast::Item::Tick(t) => {
                 if let Some(v) = sub.const_value(&empty, &t.duration.amount) {
@@ -247,7 +312,11 @@ fn check_consts_and_fns(file: &ast::File, g: &mut Globals, diags: &mut Vec<Diagn
                         ast::TimeUnit::Min => v.saturating_mul(60_000),
                     };
                     if ms <= 0 {
-                        sub.sink.push(Diagnostic::error("E0104", "the tick length must be positive", t.span));
+                        sub.sink.push(Diagnostic::error(
+                            "E0104",
+                            "the tick length must be positive",
+                            t.span,
+                        ));
                     } else {
                         g.tick_ms = Some(ms);
                     }

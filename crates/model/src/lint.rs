@@ -23,7 +23,9 @@ mod reach;
 mod trans;
 mod usage;
 
-use crate::model::{ChartId, ChartRole, Dest, Expr, ExprKind, Model, StateId, System, VarId, VarRef};
+use crate::model::{
+    ChartId, ChartRole, Dest, Expr, ExprKind, Model, StateId, System, VarId, VarRef,
+};
 use crate::types::Type;
 use statecheck_base::Diagnostic;
 
@@ -74,7 +76,11 @@ impl<'a> Cx<'a> {
     fn resolve(&self, chart: ChartId, r: VarRef) -> Vec<(ChartId, VarId)> {
         match r.instance {
             None => vec![(chart, r.var)],
-            Some(i) => self.resolve_in(self.systems_of.get(chart as usize).map_or(&[][..], |v| v), i, r.var),
+            Some(i) => self.resolve_in(
+                self.systems_of.get(chart as usize).map_or(&[][..], |v| v),
+                i,
+                r.var,
+            ),
         }
     }
 

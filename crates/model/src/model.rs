@@ -290,6 +290,10 @@ pub enum ExprKind {
     /// A value that must lie in `lo..=hi` (function parameters and results); a run-time
     /// error otherwise.
     Check(Box<Expr>, i64, i64),
+    /// `let local = value in body`: an inlined function's argument (or `let`), evaluated once.
+    Let(u32, Box<Expr>, Box<Expr>),
+    /// The value bound by the enclosing [`ExprKind::Let`] with this id.
+    Local(u32),
 }
 
 /// A checked property.
@@ -406,7 +410,10 @@ impl Model {
 impl Chart {
     /// Find a variable by name.
     pub fn var(&self, name: &str) -> Option<VarId> {
-        self.vars.iter().position(|v| v.name == name).map(|i| i as VarId)
+        self.vars
+            .iter()
+            .position(|v| v.name == name)
+            .map(|i| i as VarId)
     }
 
     /// Find a state by dotted path from the root (`""` is the root).

@@ -51,8 +51,7 @@ pub fn binary(op: BinOp, a: i64, b: i64) -> Result<i64, OpError> {
             if !(0..=MAX_SHIFT).contains(&b) {
                 return Err(OpError::BadShift);
             }
-            let r = a.checked_mul(1i64 << b).ok_or(OpError::Overflow)?;
-            r
+            a.checked_mul(1i64 << b).ok_or(OpError::Overflow)?
         }
         BinOp::Shr => {
             if !(0..=MAX_SHIFT).contains(&b) {

@@ -5,7 +5,11 @@ use crate::model::{Expr, ExprKind, Property, PropertyKind};
 /// Make every "this instance" reference in `e` refer to instance `inst`.
 pub(crate) fn expr(e: &mut Expr, inst: u32) {
     match &mut e.kind {
-        ExprKind::Const(_) => {}
+        ExprKind::Const(_) | ExprKind::Local(_) => {}
+        ExprKind::Let(_, v, b) => {
+            expr(v, inst);
+            expr(b, inst);
+        }
         ExprKind::Var(v) => {
             v.instance.get_or_insert(inst);
         }

@@ -12,6 +12,9 @@ use std::collections::HashMap;
 pub(crate) struct Globals {
     /// Constants by name: type, value, declaration span.
     pub consts: HashMap<String, (Type, i64, Span)>,
+    /// Every constant of the file with its declaration span, including those not yet checked
+    /// (to tell "declared later" from "unknown").
+    pub declared_consts: HashMap<String, Span>,
     /// Constants in declaration order (for the model).
     pub const_order: Vec<String>,
     /// Enum definitions.
@@ -21,6 +24,8 @@ pub(crate) struct Globals {
     /// Which enums declare a literal of a given name.
     pub literal_owners: HashMap<String, Vec<EnumId>>,
     /// Functions by name, with their declaration index (a function may call only earlier ones).
+    /// All functions are entered before any body is checked, so a call to a later one is
+    /// reported as such rather than as an unknown name.
     pub fns: HashMap<String, (usize, ast::FnDecl)>,
     /// Tick length in milliseconds.
     pub tick_ms: Option<i64>,

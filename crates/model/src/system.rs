@@ -18,38 +18,72 @@ pub(crate) fn check_system(
     let mut instances = Vec::new();
     let mut groups: HashMap<String, InstanceGroup> = HashMap::new();
     let mut group_order: Vec<String> = Vec::new();
-    let empty = Scope { chart: None, instances: None, charts: &[], locals: Vec::new(), fn_limit: usize::MAX };
+    let empty = Scope {
+        chart: None,
+        instances: None,
+        charts: &[],
+        locals: Vec::new(),
+        fn_limit: usize::MAX,
+    };
     for inst in &s.instances {
         let Some(&chart) = ck.globals.chart_ids.get(&inst.chart.name) else {
-            let mut d = Diagnostic::error("E0101", format!("unknown chart `{}`", inst.chart.name), inst.chart.span)
-                .with_label("no chart of this name");
-            if let Some(c) = crate::suggest::closest(&inst.chart.name, ck.globals.chart_ids.keys().map(String::as_str)) {
+            let mut d = Diagnostic::error(
+                "E0101",
+                format!("unknown chart `{}`", inst.chart.name),
+                inst.chart.span,
+            )
+            .with_label("no chart of this name");
+            if let Some(c) = crate::suggest::closest(
+                &inst.chart.name,
+                ck.globals.chart_ids.keys().map(String::as_str),
+            ) {
                 d = d.with_hint(format!("did you mean `{c}`?"));
             }
             ck.sink.push(d);
             continue;
         };
         if groups.contains_key(&inst.name.name) {
-            ck.sink.push(Diagnostic::error("E0102", format!("instance `{}` is declared twice", inst.name.name), inst.name.span));
+            let mut d = Diagnostic::error(
+                "E0102",
+                format!("instance `{}` is declared twice", inst.name.name),
+                inst.name.span,
+            )
+            .with_label("second declaration");
+            if let Some(first) = s.instances.iter().find(|i| i.name.name == inst.name.name) {
+                d = d.with_secondary(first.name.span, "first declared here");
+            }
+            ck.sink.push(d);
             continue;
         }
         let first = instances.len() as u32;
         let len = match &inst.count {
             None => {
-                instances.push(Instance { name: inst.name.name.clone(), chart, span: inst.name.span });
+                instances.push(Instance {
+                    name: inst.name.name.clone(),
+                    chart,
+                    span: inst.name.span,
+                });
                 None
             }
             Some(e) => {
                 let n = ck.const_value(&empty, e).unwrap_or(1);
                 if !(1..=4096).contains(&n) {
                     ck.sink.push(
-                        Diagnostic::error("E0104", format!("an instance array needs 1..4096 elements, not {n}"), e.span())
-                            .with_label("bad length"),
+                        Diagnostic::error(
+                            "E0104",
+                            format!("an instance array needs 1..4096 elements, not {n}"),
+                            e.span(),
+                        )
+                        .with_label("bad length"),
                     );
                 }
                 let n = n.clamp(1, 4096) as u32;
                 for i in 0..n {
-                    instances.push(Instance { name: format!("{}[{i}]", inst.name.name), chart, span: inst.name.span });
+                    instances.push(Instance {
+                        name: format!("{}[{i}]", inst.name.name),
+                        chart,
+                        span: inst.name.span,
+                    });
                 }
                 Some(n)
             }
@@ -65,8 +99,15 @@ pub(crate) fn check_system(
         let filled = chart::fill(ck, sk, o, Some(&groups), charts);
         if filled.state_by_path("error").is_none() {
             ck.sink.push(
-                Diagnostic::error("E0121", format!("observer `{}` has no top-level state named `error`", o.name.name), o.name.span)
-                    .with_hint("an observer's property is that its state `error` is never entered"),
+                Diagnostic::error(
+                    "E0121",
+                    format!(
+                        "observer `{}` has no top-level state named `error`",
+                        o.name.name
+                    ),
+                    o.name.span,
+                )
+                .with_hint("an observer's property is that its state `error` is never entered"),
             );
         }
         observer_charts.push(filled);
@@ -75,52 +116,102 @@ pub(crate) fn check_system(
         let id = charts.len() as u32;
         let name = oc.name.clone();
         charts.push(oc);
-        instances.push(Instance { name: name.clone(), chart: id, span: s.name.span });
-        groups.insert(name.clone(), InstanceGroup { first: instances.len() as u32 - 1, len: None, chart: id });
+        instances.push(Instance {
+            name: name.clone(),
+            chart: id,
+            span: s.name.span,
+        });
+        groups.insert(
+            name.clone(),
+            InstanceGroup {
+                first: instances.len() as u32 - 1,
+                len: None,
+                chart: id,
+            },
+        );
     }
 
-    let scope = Scope { chart: None, instances: Some(&groups), charts, locals: Vec::new(), fn_limit: usize::MAX };
+    let scope = Scope {
+        chart: None,
+        instances: Some(&groups),
+        charts,
+        locals: Vec::new(),
+        fn_limit: usize::MAX,
+    };
     let connections = check_connections(ck, &scope, s, &instances);
 
     // Execution order: the written order, then observers.
     let mut order: Vec<u32> = Vec::new();
     match s.order.as_slice() {
-        [] => order.extend((0..instances.len() as u32).filter(|i| charts[instances[*i as usize].chart as usize].role != ChartRole::Observer)),
+        [] => {
+            order.extend((0..instances.len() as u32).filter(|i| {
+                charts[instances[*i as usize].chart as usize].role != ChartRole::Observer
+            }))
+        }
         [o, rest @ ..] => {
             for extra in rest {
-                ck.sink.push(Diagnostic::error("E0108", "only one `order` declaration is allowed", extra.span).with_secondary(o.span, "first one here"));
+                ck.sink.push(
+                    Diagnostic::error(
+                        "E0108",
+                        "only one `order` declaration is allowed",
+                        extra.span,
+                    )
+                    .with_secondary(o.span, "first one here"),
+                );
             }
             let mut listed = Vec::new();
             for name in &o.instances {
                 match groups.get(&name.name) {
                     Some(g) if charts[g.chart as usize].role == ChartRole::Observer => {
-                        ck.sink.push(Diagnostic::error("E0122", "observers always run last; do not list them in `order`", name.span));
+                        ck.sink.push(Diagnostic::error(
+                            "E0122",
+                            "observers always run last; do not list them in `order`",
+                            name.span,
+                        ));
                     }
                     Some(g) => {
                         if listed.contains(&name.name) {
-                            ck.sink.push(Diagnostic::error("E0122", format!("`{}` appears twice in `order`", name.name), name.span));
+                            ck.sink.push(Diagnostic::error(
+                                "E0122",
+                                format!("`{}` appears twice in `order`", name.name),
+                                name.span,
+                            ));
                             continue;
                         }
                         listed.push(name.name.clone());
                         order.extend(g.first..g.first + g.len.unwrap_or(1));
                     }
-                    None => ck.sink.push(Diagnostic::error("E0101", format!("unknown instance `{}`", name.name), name.span)),
+                    None => ck
+                        .sink
+                        .push(unknown_instance(&name.name, name.span, &group_order)),
                 }
             }
             for g in &group_order {
                 if !listed.contains(g) {
                     ck.sink.push(
-                        Diagnostic::error("E0122", format!("instance `{g}` is missing from `order`"), o.span)
-                            .with_hint("list every instance exactly once"),
+                        Diagnostic::error(
+                            "E0122",
+                            format!("instance `{g}` is missing from `order`"),
+                            o.span,
+                        )
+                        .with_hint("list every instance exactly once"),
                     );
                 }
             }
         }
     }
-    order.extend((0..instances.len() as u32).filter(|i| charts[instances[*i as usize].chart as usize].role == ChartRole::Observer));
+    order.extend(
+        (0..instances.len() as u32)
+            .filter(|i| charts[instances[*i as usize].chart as usize].role == ChartRole::Observer),
+    );
 
-    let assumes = s.assumes.iter().map(|a| ck.check_bool(&scope, &a.expr)).collect();
-    let mut properties: Vec<Property> = crate::property::check_properties(ck, &scope, &s.properties);
+    let assumes = s
+        .assumes
+        .iter()
+        .map(|a| ck.check_bool(&scope, &a.expr))
+        .collect();
+    let mut properties: Vec<Property> =
+        crate::property::check_properties(ck, &scope, &s.properties);
     // Chart-level properties hold for every instance.
     for (i, inst) in instances.iter().enumerate() {
         for p in &charts[inst.chart as usize].properties {
@@ -133,66 +224,165 @@ pub(crate) fn check_system(
     let mut seen = HashMap::new();
     for p in &properties {
         if let Some(prev) = seen.insert(p.name.clone(), p.span) {
-            ck.sink.push(Diagnostic::error("E0102", format!("property `{}` is declared twice", p.name), p.span).with_secondary(prev, "first declared here"));
+            ck.sink.push(
+                Diagnostic::error(
+                    "E0102",
+                    format!("property `{}` is declared twice", p.name),
+                    p.span,
+                )
+                .with_label("second declaration")
+                .with_secondary(prev, "first declared here"),
+            );
         }
     }
-    System { name: s.name.name.clone(), implicit: false, instances, connections, order, assumes, properties, span: s.name.span }
+    System {
+        name: s.name.name.clone(),
+        implicit: false,
+        instances,
+        connections,
+        order,
+        assumes,
+        properties,
+        span: s.name.span,
+    }
 }
 
-fn check_connections(ck: &mut ExprChecker, scope: &Scope, s: &ast::System, instances: &[Instance]) -> Vec<Connection> {
+fn check_connections(
+    ck: &mut ExprChecker,
+    scope: &Scope,
+    s: &ast::System,
+    instances: &[Instance],
+) -> Vec<Connection> {
     let groups = scope.instances.expect("system scope");
     let mut out: Vec<Connection> = Vec::new();
-    let endpoint = |ck: &mut ExprChecker, p: &ast::Path, allow_all: bool| -> Option<Vec<(u32, u32)>> {
+    let endpoint = |ck: &mut ExprChecker,
+                    p: &ast::Path,
+                    allow_all: bool|
+     -> Option<Vec<(u32, u32)>> {
         if p.segments.len() != 2 || p.segments[1].index.is_some() {
-            ck.sink.push(Diagnostic::error("E0123", "a connection endpoint is `instance.variable`", p.span).with_label("expected `instance.variable`"));
+            ck.sink.push(
+                Diagnostic::error(
+                    "E0123",
+                    "a connection endpoint is `instance.variable`",
+                    p.span,
+                )
+                .with_label("expected `instance.variable`"),
+            );
             return None;
         }
         let seg = &p.segments[0];
         let Some(g) = groups.get(&seg.name.name) else {
-            ck.sink.push(Diagnostic::error("E0101", format!("unknown instance `{}`", seg.name.name), seg.name.span));
+            let mut names: Vec<String> = groups.keys().cloned().collect();
+            names.sort();
+            ck.sink
+                .push(unknown_instance(&seg.name.name, seg.name.span, &names));
             return None;
         };
         let chart = &scope.charts[g.chart as usize];
-        let Some(v) = chart.var(&p.segments[1].name.name) else {
-            ck.sink.push(
-                Diagnostic::error("E0101", format!("chart `{}` has no variable `{}`", chart.name, p.segments[1].name.name), p.segments[1].name.span)
-                    .with_label("unknown variable"),
-            );
+        let vname = &p.segments[1].name.name;
+        let Some(v) = chart.var(vname) else {
+            let mut d = Diagnostic::error(
+                "E0101",
+                format!("chart `{}` has no variable `{vname}`", chart.name),
+                p.segments[1].name.span,
+            )
+            .with_label("unknown variable");
+            if let Some(c) =
+                crate::suggest::closest(vname, chart.vars.iter().map(|v| v.name.as_str()))
+            {
+                d = d.with_hint(format!("did you mean `{c}`?"));
+            }
+            ck.sink.push(d);
             return None;
         };
         let insts: Vec<u32> = match (&seg.index, g.len) {
             (Some(ast::Index::All(span)), Some(len)) => {
                 if !allow_all {
-                    ck.sink.push(Diagnostic::error("E0123", "`[*]` is only allowed on the receiving side", *span));
+                    ck.sink.push(
+                        Diagnostic::error("E0123", "`[*]` is only allowed on the receiving side", *span)
+                            .with_label("one sender per connection")
+                            .with_hint("connect one element (`[0]`) to many receivers (`[*]`), not many to one"),
+                    );
                     return None;
                 }
                 (g.first..g.first + len).collect()
             }
             (Some(ast::Index::At(e)), Some(len)) => {
-                let i = ck.const_value(&Scope { chart: None, instances: None, charts: &[], locals: Vec::new(), fn_limit: usize::MAX }, e)?;
+                let i = ck.const_value(
+                    &Scope {
+                        chart: None,
+                        instances: None,
+                        charts: &[],
+                        locals: Vec::new(),
+                        fn_limit: usize::MAX,
+                    },
+                    e,
+                )?;
                 if i < 0 || i >= len as i64 {
-                    ck.sink.push(Diagnostic::error("E0104", format!("index {i} out of range (length {len})"), e.span()));
+                    ck.sink.push(
+                        Diagnostic::error(
+                            "E0104",
+                            format!(
+                                "index {i} out of range for `{}` (length {len})",
+                                seg.name.name
+                            ),
+                            e.span(),
+                        )
+                        .with_label(format!("must be within 0..{}", len - 1)),
+                    );
                     return None;
                 }
                 vec![g.first + i as u32]
             }
             (None, None) => vec![g.first],
-            _ => {
-                ck.sink.push(Diagnostic::error("E0123", format!("`{}` needs {} index", seg.name.name, if g.len.is_some() { "an" } else { "no" }), seg.name.span));
+            (None, Some(_)) => {
+                let n = &seg.name.name;
+                let hint = if allow_all {
+                    format!("write `{n}[0]` for one element, or `{n}[*]` for every element")
+                } else {
+                    format!("write `{n}[0]`")
+                };
+                ck.sink.push(
+                    Diagnostic::error(
+                        "E0123",
+                        format!("`{n}` is an array of instances and needs an index"),
+                        seg.name.span,
+                    )
+                    .with_label("needs an index")
+                    .with_hint(hint),
+                );
+                return None;
+            }
+            (Some(_), None) => {
+                ck.sink.push(
+                    Diagnostic::error(
+                        "E0123",
+                        format!("`{}` is not an instance array", seg.name.name),
+                        seg.name.span,
+                    )
+                    .with_label("remove the index"),
+                );
                 return None;
             }
         };
         Some(insts.into_iter().map(|i| (i, v)).collect())
     };
     for c in &s.connections {
-        let (Some(from), Some(to)) = (endpoint(ck, &c.from, false), endpoint(ck, &c.to, true)) else { continue };
+        let (Some(from), Some(to)) = (endpoint(ck, &c.from, false), endpoint(ck, &c.to, true))
+        else {
+            continue;
+        };
         let (fi, fv) = from[0];
         let fchart = &scope.charts[instances[fi as usize].chart as usize];
         let fvar = &fchart.vars[fv as usize];
         if fvar.kind == VarKind::Local {
             ck.sink.push(
-                Diagnostic::error("E0123", format!("`{}` is local to `{}`", fvar.name, fchart.name), c.from.span)
-                    .with_hint("declare it `output` to connect it"),
+                Diagnostic::error(
+                    "E0123",
+                    format!("`{}` is local to `{}`", fvar.name, fchart.name),
+                    c.from.span,
+                )
+                .with_hint("declare it `output` to connect it"),
             );
             continue;
         }
@@ -201,13 +391,20 @@ fn check_connections(ck: &mut ExprChecker, scope: &Scope, s: &ast::System, insta
             let tvar = &tchart.vars[tv as usize];
             if tvar.kind != VarKind::Input {
                 ck.sink.push(
-                    Diagnostic::error("E0123", format!("`{}` of `{}` is not an input", tvar.name, tchart.name), c.to.span)
-                        .with_hint("a connection writes an input of the receiving instance"),
+                    Diagnostic::error(
+                        "E0123",
+                        format!("`{}` of `{}` is not an input", tvar.name, tchart.name),
+                        c.to.span,
+                    )
+                    .with_hint("a connection writes an input of the receiving instance"),
                 );
                 continue;
             }
             if tvar.is_event != fvar.is_event || !fvar.ty.compatible(tvar.ty) {
-                let (a, b) = (type_name(ck.globals, fvar.ty), type_name(ck.globals, tvar.ty));
+                let (a, b) = (
+                    type_name(ck.globals, fvar.ty),
+                    type_name(ck.globals, tvar.ty),
+                );
                 ck.sink.push(
                     Diagnostic::error("E0103", format!("cannot connect `{a}` to `{b}`"), c.span)
                         .with_secondary(fvar.span, format!("`{a}` here"))
@@ -215,10 +412,21 @@ fn check_connections(ck: &mut ExprChecker, scope: &Scope, s: &ast::System, insta
                 );
                 continue;
             }
-            if let (crate::types::Type::Int { lo, hi }, crate::types::Type::Int { lo: tl, hi: th }) = (fvar.ty, tvar.ty) {
+            if let (
+                crate::types::Type::Int { lo, hi },
+                crate::types::Type::Int { lo: tl, hi: th },
+            ) = (fvar.ty, tvar.ty)
+            {
                 if lo < tl || hi > th {
                     ck.sink.push(
-                        Diagnostic::error("E0104", format!("`{}` ranges over {lo}..{hi}, but `{}` accepts only {tl}..{th}", fvar.name, tvar.name), c.span)
+                        Diagnostic::error(
+                            "E0104",
+                            format!(
+                                "`{}.{}` ranges over {lo}..{hi}, but `{}.{}` accepts only {tl}..{th}",
+                                instances[fi as usize].name, fvar.name, instances[ti as usize].name, tvar.name
+                            ),
+                            c.span,
+                        )
                             .with_hint("widen the input's range or narrow the output's"),
                     );
                     continue;
@@ -226,16 +434,40 @@ fn check_connections(ck: &mut ExprChecker, scope: &Scope, s: &ast::System, insta
             }
             if let Some(prev) = out.iter().find(|o| o.to == (ti, tv)) {
                 ck.sink.push(
-                    Diagnostic::error("E0123", format!("input `{}.{}` is connected twice", instances[ti as usize].name, tvar.name), c.span)
-                        .with_secondary(prev.span, "first connection"),
+                    Diagnostic::error(
+                        "E0123",
+                        format!(
+                            "input `{}.{}` is connected twice",
+                            instances[ti as usize].name, tvar.name
+                        ),
+                        c.span,
+                    )
+                    .with_secondary(prev.span, "first connection"),
                 );
                 continue;
             }
             if fi == ti {
-                ck.sink.push(Diagnostic::warning("W0202", "an instance connected to itself", c.span).with_hint("the input sees the output of the previous tick"));
+                ck.sink.push(
+                    Diagnostic::warning("W0202", "an instance connected to itself", c.span)
+                        .with_hint("the input sees the output of the previous tick"),
+                );
             }
-            out.push(Connection { from: (fi, fv), to: (ti, tv), span: c.span });
+            out.push(Connection {
+                from: (fi, fv),
+                to: (ti, tv),
+                span: c.span,
+            });
         }
     }
     out
+}
+
+/// "unknown instance" with a suggestion among the declared ones.
+fn unknown_instance(name: &str, span: statecheck_base::Span, declared: &[String]) -> Diagnostic {
+    let mut d = Diagnostic::error("E0101", format!("unknown instance `{name}`"), span)
+        .with_label("no instance of this name");
+    if let Some(c) = crate::suggest::closest(name, declared.iter().map(String::as_str)) {
+        d = d.with_hint(format!("did you mean `{c}`?"));
+    }
+    d
 }

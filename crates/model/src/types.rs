@@ -117,12 +117,11 @@ pub mod interval {
 
     /// Bounds of a bitwise operation or shift: the smallest power-of-two span covering both.
     pub fn bits(a: (i64, i64), b: (i64, i64)) -> (i64, i64) {
-        let m = a
-            .0
-            .unsigned_abs()
-            .max(a.1.unsigned_abs())
-            .max(b.0.unsigned_abs())
-            .max(b.1.unsigned_abs());
+        let m =
+            a.0.unsigned_abs()
+                .max(a.1.unsigned_abs())
+                .max(b.0.unsigned_abs())
+                .max(b.1.unsigned_abs());
         let p = m.checked_next_power_of_two().unwrap_or(u64::MAX / 2) as i64;
         if a.0 < 0 || b.0 < 0 {
             (-p, p - 1)

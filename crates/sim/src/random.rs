@@ -16,7 +16,10 @@ pub struct RandomInputs {
 impl RandomInputs {
     /// `ticks` ticks of random inputs from `seed` (the same seed gives the same inputs).
     pub fn new(seed: u64, ticks: u64) -> Self {
-        RandomInputs { rng: rand::rngs::StdRng::seed_from_u64(seed), ticks }
+        RandomInputs {
+            rng: rand::rngs::StdRng::seed_from_u64(seed),
+            ticks,
+        }
     }
 }
 
@@ -33,12 +36,19 @@ impl InputSource for RandomInputs {
                 inputs[k] = self.rng.random_range(s.lo..=s.hi);
                 scratch.set(inp.slot, inputs[k]);
             }
-            let violated = p.assumes.iter().position(|a| scratch.eval(*a).map_or(true, |v| v == 0));
+            let violated = p
+                .assumes
+                .iter()
+                .position(|a| scratch.eval(*a).map_or(true, |v| v == 0));
             if violated.is_none() {
                 return Ok(true);
             }
         }
-        let first = p.assumes.iter().position(|a| scratch.eval(*a).map_or(true, |v| v == 0)).unwrap_or(0);
+        let first = p
+            .assumes
+            .iter()
+            .position(|a| scratch.eval(*a).map_or(true, |v| v == 0))
+            .unwrap_or(0);
         Err(first)
     }
 }

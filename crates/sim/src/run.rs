@@ -87,7 +87,9 @@ impl<'s> ScenarioInputs<'s> {
 
 impl InputSource for ScenarioInputs<'_> {
     fn next(&mut self, tick: u64, machine: &Machine, inputs: &mut [i64]) -> Result<bool, usize> {
-        let Some(changes) = self.scenario.ticks.get(tick as usize) else { return Ok(false) };
+        let Some(changes) = self.scenario.ticks.get(tick as usize) else {
+            return Ok(false);
+        };
         let p = machine.program();
         for (k, inp) in p.inputs.iter().enumerate() {
             if inp.is_event {
@@ -107,7 +109,11 @@ pub fn run(program: &Program, source: &mut dyn InputSource, opts: Options) -> Ru
     if opts.coverage {
         m.enable_coverage();
     }
-    let mut inputs: Vec<i64> = program.inputs.iter().map(|i| program.slots[i.slot as usize].init).collect();
+    let mut inputs: Vec<i64> = program
+        .inputs
+        .iter()
+        .map(|i| program.slots[i.slot as usize].init)
+        .collect();
     let mut trace = Vec::new();
     let mut all_inputs = Vec::new();
     let mut reached: Vec<(String, Option<u64>)> = program
@@ -126,7 +132,11 @@ pub fn run(program: &Program, source: &mut dyn InputSource, opts: Options) -> Ru
         for (k, inp) in program.inputs.iter().enumerate() {
             m.set(inp.slot, inputs[k]);
         }
-        if let Some(a) = program.assumes.iter().position(|a| m.eval(*a).map_or(true, |v| v == 0)) {
+        if let Some(a) = program
+            .assumes
+            .iter()
+            .position(|a| m.eval(*a).map_or(true, |v| v == 0))
+        {
             break Stop::AssumeViolated { tick, assume: a };
         }
         all_inputs.push(inputs.clone());
@@ -134,25 +144,42 @@ pub fn run(program: &Program, source: &mut dyn InputSource, opts: Options) -> Ru
             break Stop::RuntimeError { tick, error };
         }
         if !opts.no_trace {
-            trace.push(TickRecord { tick, slots: m.slots().to_vec() });
+            trace.push(TickRecord {
+                tick,
+                slots: m.slots().to_vec(),
+            });
         }
-        if let Some(name) = first_violation(program, &m, tick, &mut reached) {
-            break Stop::Violation { tick, property: name };
+        if let Some(name) = first_violation(program, &mut m, tick, &mut reached) {
+            break Stop::Violation {
+                tick,
+                property: name,
+            };
         }
         tick += 1;
     };
-    Run { trace, stop, reached, coverage: m.coverage().map(<[u64]>::to_vec), inputs: all_inputs }
+    Run {
+        trace,
+        stop,
+        reached,
+        coverage: m.coverage().map(<[u64]>::to_vec),
+        inputs: all_inputs,
+    }
 }
 
 /// The first property (in declaration order) that the machine's current state violates;
 /// records `reachable` properties that now hold.
-fn first_violation(p: &Program, m: &Machine, tick: u64, reached: &mut [(String, Option<u64>)]) -> Option<String> {
-    let holds = |e| m.eval(e).map_or(false, |v| v != 0);
+fn first_violation(
+    p: &Program,
+    m: &mut Machine,
+    tick: u64,
+    reached: &mut [(String, Option<u64>)],
+) -> Option<String> {
+    let mut holds = |e| m.eval(e).is_ok_and(|v| v != 0);
     let mut r = 0;
     for prop in &p.properties {
         match &prop.kind {
             PropertyKind::Invariant { expr, assuming } => {
-                if assuming.map_or(true, holds) && !holds(*expr) {
+                if assuming.is_none_or(&mut holds) && !holds(*expr) {
                     return Some(prop.name.clone());
                 }
             }

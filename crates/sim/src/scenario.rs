@@ -48,7 +48,13 @@ pub fn parse(text: &str, program: &Program) -> Result<Scenario, Vec<ScenarioErro
         if content.trim().is_empty() {
             continue;
         }
-        let err = |col: usize, len: usize, message: String, hint: Option<String>| ScenarioError { line: line_no, col: col + 1, len: len.max(1), message, hint };
+        let err = |col: usize, len: usize, message: String, hint: Option<String>| ScenarioError {
+            line: line_no,
+            col: col + 1,
+            len: len.max(1),
+            message,
+            hint,
+        };
         // `* N` repeat suffix.
         let (body, repeat) = match content.rfind('*') {
             Some(star) => {
@@ -56,7 +62,12 @@ pub fn parse(text: &str, program: &Program) -> Result<Scenario, Vec<ScenarioErro
                 match n_text.parse::<usize>() {
                     Ok(n) if n >= 1 => (&content[..star], n),
                     _ => {
-                        errors.push(err(star, content.len() - star, format!("bad repeat count `{n_text}`"), Some("write `* N` with N ≥ 1 at the end of the line".into())));
+                        errors.push(err(
+                            star,
+                            content.len() - star,
+                            format!("bad repeat count `{n_text}`"),
+                            Some("write `* N` with N ≥ 1 at the end of the line".into()),
+                        ));
                         continue;
                     }
                 }
@@ -72,7 +83,12 @@ pub fn parse(text: &str, program: &Program) -> Result<Scenario, Vec<ScenarioErro
                 offset += item.len() + 1;
                 let item_t = item.trim();
                 if item_t.is_empty() {
-                    errors.push(err(start, 1, "empty item".into(), Some("items are separated by single commas".into())));
+                    errors.push(err(
+                        start,
+                        1,
+                        "empty item".into(),
+                        Some("items are separated by single commas".into()),
+                    ));
                     continue;
                 }
                 let (name, value) = match item_t.split_once('=') {
@@ -94,27 +110,52 @@ pub fn parse(text: &str, program: &Program) -> Result<Scenario, Vec<ScenarioErro
                         "true" | "1" => 1,
                         "false" | "0" => 0,
                         _ => {
-                            errors.push(err(start, item_t.len(), format!("event `{}` is present or absent, not `{v}`", input.name), Some(format!("write just `{name}` to make it present", ))));
+                            errors.push(err(
+                                start,
+                                item_t.len(),
+                                format!("event `{}` is present or absent, not `{v}`", input.name),
+                                Some(format!("write just `{name}` to make it present",)),
+                            ));
                             continue;
                         }
                     },
                     (None, false) => {
-                        errors.push(err(start, name.len(), format!("`{}` is not an event; give it a value", input.name), Some(format!("write `{name} = <value>`"))));
+                        errors.push(err(
+                            start,
+                            name.len(),
+                            format!("`{}` is not an event; give it a value", input.name),
+                            Some(format!("write `{name} = <value>`")),
+                        ));
                         continue;
                     }
                     (Some(v), false) => match slot.display.parse(v) {
                         Some(x) if x >= slot.lo && x <= slot.hi => x,
                         Some(x) => {
-                            errors.push(err(start, item_t.len(), format!("{x} is out of range {}..{} for `{}`", slot.lo, slot.hi, input.name), None));
+                            errors.push(err(
+                                start,
+                                item_t.len(),
+                                format!(
+                                    "{x} is out of range {}..{} for `{}`",
+                                    slot.lo, slot.hi, input.name
+                                ),
+                                None,
+                            ));
                             continue;
                         }
                         None => {
                             let hint = match &slot.display {
-                                statecheck_ir::ValueKind::Enum(names) => format!("one of: {}", names.join(", ")),
+                                statecheck_ir::ValueKind::Enum(names) => {
+                                    format!("one of: {}", names.join(", "))
+                                }
                                 statecheck_ir::ValueKind::Bool => "`true` or `false`".into(),
                                 statecheck_ir::ValueKind::Int => "an integer".into(),
                             };
-                            errors.push(err(start, item_t.len(), format!("`{v}` is not a value of `{}`", input.name), Some(hint)));
+                            errors.push(err(
+                                start,
+                                item_t.len(),
+                                format!("`{v}` is not a value of `{}`", input.name),
+                                Some(hint),
+                            ));
                             continue;
                         }
                     },
@@ -123,7 +164,12 @@ pub fn parse(text: &str, program: &Program) -> Result<Scenario, Vec<ScenarioErro
             }
         }
         if ticks.len().saturating_add(repeat) > MAX_TICKS {
-            errors.push(err(0, content.len(), format!("the scenario would exceed {MAX_TICKS} ticks"), None));
+            errors.push(err(
+                0,
+                content.len(),
+                format!("the scenario would exceed {MAX_TICKS} ticks"),
+                None,
+            ));
             break;
         }
         for _ in 0..repeat {
@@ -153,7 +199,10 @@ fn resolve(program: &Program, name: &str) -> Result<usize, (String, Option<Strin
         [i] => Ok(*i),
         [] => {
             let known: Vec<&str> = program.inputs.iter().map(|i| i.name.as_str()).collect();
-            let is_var = program.slots.iter().any(|s| s.name == name || s.name.rsplit('.').next() == Some(name));
+            let is_var = program
+                .slots
+                .iter()
+                .any(|s| s.name == name || s.name.rsplit('.').next() == Some(name));
             let hint = if is_var {
                 Some(format!("`{name}` is not a free input (it is computed or connected); the free inputs are: {}", known.join(", ")))
             } else if known.is_empty() {
@@ -165,7 +214,13 @@ fn resolve(program: &Program, name: &str) -> Result<usize, (String, Option<Strin
         }
         many => Err((
             format!("`{name}` is ambiguous"),
-            Some(format!("qualify it: {}", many.iter().map(|i| program.inputs[*i].name.as_str()).collect::<Vec<_>>().join(" or "))),
+            Some(format!(
+                "qualify it: {}",
+                many.iter()
+                    .map(|i| program.inputs[*i].name.as_str())
+                    .collect::<Vec<_>>()
+                    .join(" or ")
+            )),
         )),
     }
 }
@@ -173,7 +228,9 @@ fn resolve(program: &Program, name: &str) -> Result<usize, (String, Option<Strin
 /// Write a scenario in the canonical format: qualified names, held inputs written only when
 /// they change, identical consecutive lines folded into `* N`.
 pub fn format(s: &Scenario, program: &Program) -> String {
-    let mut out = String::from("# statecheck scenario: one line per tick; `name = value` holds, bare names are events\n");
+    let mut out = String::from(
+        "# statecheck scenario: one line per tick; `name = value` holds, bare names are events\n",
+    );
     let mut lines: Vec<String> = Vec::with_capacity(s.ticks.len());
     for tick in &s.ticks {
         let items: Vec<String> = tick
@@ -183,17 +240,26 @@ pub fn format(s: &Scenario, program: &Program) -> String {
                 if inp.is_event {
                     inp.name.clone()
                 } else {
-                    format!("{} = {}", inp.name, program.slots[inp.slot as usize].display.format(*v))
+                    format!(
+                        "{} = {}",
+                        inp.name,
+                        program.slots[inp.slot as usize].display.format(*v)
+                    )
                 }
             })
             .collect();
-        lines.push(if items.is_empty() { "-".into() } else { items.join(", ") });
+        lines.push(if items.is_empty() {
+            "-".into()
+        } else {
+            items.join(", ")
+        });
     }
     let mut i = 0;
     while i < lines.len() {
         let mut j = i + 1;
         // Only fold lines that are pure repeats: event lines, or `-`.
-        let foldable = lines[i] == "-" || s.ticks[i].iter().all(|(k, _)| program.inputs[*k].is_event);
+        let foldable =
+            lines[i] == "-" || s.ticks[i].iter().all(|(k, _)| program.inputs[*k].is_event);
         while foldable && j < lines.len() && lines[j] == lines[i] {
             j += 1;
         }
@@ -211,7 +277,11 @@ pub fn format(s: &Scenario, program: &Program) -> String {
 /// Build a scenario from full input vectors (one per tick, in `Program::inputs` order),
 /// keeping only the changes of held inputs and the present events.
 pub fn from_input_vectors(program: &Program, vectors: &[Vec<i64>]) -> Scenario {
-    let mut held: Vec<i64> = program.inputs.iter().map(|i| program.slots[i.slot as usize].init).collect();
+    let mut held: Vec<i64> = program
+        .inputs
+        .iter()
+        .map(|i| program.slots[i.slot as usize].init)
+        .collect();
     let ticks = vectors
         .iter()
         .map(|vec| {

@@ -24,7 +24,10 @@ impl Tally {
 }
 
 fn tally(p: &Program, counts: &[u64], states: bool) -> Tally {
-    let mut t = Tally { covered: 0, total: 0 };
+    let mut t = Tally {
+        covered: 0,
+        total: 0,
+    };
     for (c, n) in p.covers.iter().zip(counts) {
         if matches!(c.kind, CoverKind::State(_)) == states {
             t.total += 1;
@@ -60,7 +63,15 @@ pub fn summary(p: &Program, counts: &[u64], source: &str) -> String {
         if *n == 0 {
             let (line, col) = idx.line_col(c.span.start);
             let inst = &p.instances[c.instance as usize].name;
-            out.push_str(&format!("  never {}: {inst}: {} (line {line}:{col})\n", if matches!(c.kind, CoverKind::State(_)) { "entered" } else { "fired" }, c.label));
+            out.push_str(&format!(
+                "  never {}: {inst}: {} (line {line}:{col})\n",
+                if matches!(c.kind, CoverKind::State(_)) {
+                    "entered"
+                } else {
+                    "fired"
+                },
+                c.label
+            ));
         }
     }
     out
@@ -91,7 +102,10 @@ pub fn to_json(p: &Program, counts: &[u64], source: &str) -> Value {
 
 /// Read counts back from a coverage JSON file, checking it matches the program.
 pub fn from_json(p: &Program, v: &Value) -> Result<Vec<u64>, String> {
-    let items = v.get("items").and_then(Value::as_array).ok_or("not a statecheck coverage file (no `items`)")?;
+    let items = v
+        .get("items")
+        .and_then(Value::as_array)
+        .ok_or("not a statecheck coverage file (no `items`)")?;
     if items.len() != p.covers.len() {
         return Err(format!("the coverage file has {} items but the model has {}; was it written for another model or system?", items.len(), p.covers.len()));
     }

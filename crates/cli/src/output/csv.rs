@@ -18,12 +18,23 @@ pub fn render(p: &Program, views: &Views, trace: &[TickRecord]) -> String {
     header.extend(views.instances.iter().map(|i| format!("{i}.active")));
     header.extend(views.vars.iter().map(|v| v.name.clone()));
     header.push("events".into());
-    let mut out = header.iter().map(|h| quote(h)).collect::<Vec<_>>().join(",");
+    let mut out = header
+        .iter()
+        .map(|h| quote(h))
+        .collect::<Vec<_>>()
+        .join(",");
     out.push('\n');
     for rec in trace {
         let mut row = vec![rec.tick.to_string()];
-        row.extend((0..views.instances.len()).map(|i| views.active(p, i, &rec.slots, true).join("|")));
-        row.extend(views.vars.iter().map(|v| v.display.format(rec.slots[v.slot as usize])));
+        row.extend(
+            (0..views.instances.len()).map(|i| views.active(p, i, &rec.slots, true).join("|")),
+        );
+        row.extend(
+            views
+                .vars
+                .iter()
+                .map(|v| v.display.format(rec.slots[v.slot as usize])),
+        );
         row.push(views.present_events(&rec.slots).join("|"));
         out.push_str(&row.iter().map(|c| quote(c)).collect::<Vec<_>>().join(","));
         out.push('\n');

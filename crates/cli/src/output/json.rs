@@ -22,7 +22,10 @@ pub fn tick(p: &Program, views: &Views, rec: &TickRecord) -> Value {
     }
     let mut vars = Map::new();
     for v in &views.vars {
-        vars.insert(v.name.clone(), value(&v.display, rec.slots[v.slot as usize]));
+        vars.insert(
+            v.name.clone(),
+            value(&v.display, rec.slots[v.slot as usize]),
+        );
     }
     json!({"tick": rec.tick, "active": active, "vars": vars, "events": views.present_events(&rec.slots)})
 }

@@ -20,18 +20,31 @@ pub fn render(p: &Program, views: &Views, trace: &[TickRecord]) -> String {
                 }
             })
             .collect();
-        let mut changes: Vec<String> = views.present_events(&rec.slots).into_iter().map(|e| format!("{}!", short(views, &e))).collect();
+        let mut changes: Vec<String> = views
+            .present_events(&rec.slots)
+            .into_iter()
+            .map(|e| format!("{}!", short(views, &e)))
+            .collect();
         for v in &views.vars {
             let now = rec.slots[v.slot as usize];
-            if prev.map_or(true, |pv| pv[v.slot as usize] != now) {
-                changes.push(format!("{}={}", short(views, &v.name), v.display.format(now)));
+            if prev.is_none_or(|pv| pv[v.slot as usize] != now) {
+                changes.push(format!(
+                    "{}={}",
+                    short(views, &v.name),
+                    v.display.format(now)
+                ));
             }
         }
         rows.push((rec.tick.to_string(), active.join("; "), changes.join(" ")));
         prev = Some(&rec.slots);
     }
     let w0 = rows.iter().map(|r| r.0.len()).max().unwrap_or(0).max(4);
-    let w1 = rows.iter().map(|r| r.1.chars().count()).max().unwrap_or(0).clamp(6, 60);
+    let w1 = rows
+        .iter()
+        .map(|r| r.1.chars().count())
+        .max()
+        .unwrap_or(0)
+        .clamp(6, 60);
     let mut out = String::new();
     let _ = writeln!(out, "{:>w0$}  {:<w1$}  changes", "tick", "active");
     for (t, a, c) in rows {

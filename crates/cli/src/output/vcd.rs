@@ -18,19 +18,35 @@ fn ident(mut n: usize) -> String {
 }
 
 fn vcd_name(s: &str) -> String {
-    s.chars().map(|c| if c.is_ascii_alphanumeric() || c == '_' || c == '.' { c } else { '_' }).collect()
+    s.chars()
+        .map(|c| {
+            if c.is_ascii_alphanumeric() || c == '_' || c == '.' {
+                c
+            } else {
+                '_'
+            }
+        })
+        .collect()
 }
 
 /// Render a trace as VCD; one tick lasts `tick_ms` milliseconds (1 if the model declares none).
 pub fn render(p: &Program, views: &Views, trace: &[TickRecord], tick_ms: i64) -> String {
     enum Sig {
-        Var { slot: u32, width: u32, is_bool: bool },
+        Var {
+            slot: u32,
+            width: u32,
+            is_bool: bool,
+        },
         Event(u32),
         State(u32),
     }
     let mut sigs: Vec<(String, Sig)> = Vec::new();
     let mut out = String::new();
-    let _ = writeln!(out, "$date statecheck trace $end\n$version statecheck {} $end\n$timescale 1ms $end", env!("CARGO_PKG_VERSION"));
+    let _ = writeln!(
+        out,
+        "$date statecheck trace $end\n$version statecheck {} $end\n$timescale 1ms $end",
+        env!("CARGO_PKG_VERSION")
+    );
     for (i, inst) in views.instances.iter().enumerate() {
         let _ = writeln!(out, "$scope module {} $end", vcd_name(inst));
         let prefix = format!("{inst}.");
@@ -42,11 +58,22 @@ pub fn render(p: &Program, views: &Views, trace: &[TickRecord], tick_ms: i64) ->
             } else {
                 let _ = writeln!(out, "$var integer 64 {id} {local} $end");
             }
-            sigs.push((id, Sig::Var { slot: v.slot, width: v.width, is_bool: v.is_bool }));
+            sigs.push((
+                id,
+                Sig::Var {
+                    slot: v.slot,
+                    width: v.width,
+                    is_bool: v.is_bool,
+                },
+            ));
         }
         for (name, slot) in views.events.iter().filter(|(n, _)| n.starts_with(&prefix)) {
             let id = ident(sigs.len());
-            let _ = writeln!(out, "$var wire 1 {id} {} $end", vcd_name(&name[prefix.len()..]));
+            let _ = writeln!(
+                out,
+                "$var wire 1 {id} {} $end",
+                vcd_name(&name[prefix.len()..])
+            );
             sigs.push((id, Sig::Event(*slot)));
         }
         let _ = writeln!(out, "$scope module states $end");
@@ -63,7 +90,11 @@ pub fn render(p: &Program, views: &Views, trace: &[TickRecord], tick_ms: i64) ->
         let mut changes = String::new();
         for (k, (id, sig)) in sigs.iter().enumerate() {
             let (v, bit) = match sig {
-                Sig::Var { slot, is_bool, width } => {
+                Sig::Var {
+                    slot,
+                    is_bool,
+                    width,
+                } => {
                     let _ = width;
                     (rec.slots[*slot as usize], *is_bool)
                 }

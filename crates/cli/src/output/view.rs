@@ -56,11 +56,22 @@ impl Views {
                     events.push((name, slot));
                 } else {
                     let s = &p.slots[slot as usize];
-                    vars.push(VarView { name, slot, display: s.display.clone(), width: s.width().max(1), is_bool: s.display == ValueKind::Bool });
+                    vars.push(VarView {
+                        name,
+                        slot,
+                        display: s.display.clone(),
+                        width: s.width().max(1),
+                        is_bool: s.display == ValueKind::Bool,
+                    });
                 }
             }
         }
-        Views { instances: p.instances.iter().map(|i| i.name.clone()).collect(), states, vars, events }
+        Views {
+            instances: p.instances.iter().map(|i| i.name.clone()).collect(),
+            states,
+            vars,
+            events,
+        }
     }
 
     /// Active state paths of instance `i` in `slots` (`leaves_only` drops composites).
@@ -68,13 +79,17 @@ impl Views {
         self.states[i]
             .iter()
             .filter(|(_, _, leaf)| !leaves_only || *leaf)
-            .filter(|(_, e, _)| eval(&p.nodes, slots, *e).map_or(false, |v| v != 0))
+            .filter(|(_, e, _)| eval(&p.nodes, slots, *e).is_ok_and(|v| v != 0))
             .map(|(path, _, _)| path.clone())
             .collect()
     }
 
     /// Names of the events present in `slots`.
     pub fn present_events(&self, slots: &[i64]) -> Vec<String> {
-        self.events.iter().filter(|(_, s)| slots[*s as usize] != 0).map(|(n, _)| n.clone()).collect()
+        self.events
+            .iter()
+            .filter(|(_, s)| slots[*s as usize] != 0)
+            .map(|(n, _)| n.clone())
+            .collect()
     }
 }

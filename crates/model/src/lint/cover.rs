@@ -48,7 +48,13 @@ pub(super) fn structurally_valid(d: &Dest) -> bool {
 
 /// Does `dest` lead to a state for every valuation in which all of `assume` hold (and the
 /// event `trigger`, if any, is present)? Expressions are those of chart `chart`.
-pub(super) fn coverage(cx: &Cx, chart: ChartId, assume: &[&Expr], trigger: Option<VarId>, dest: &Dest) -> Coverage {
+pub(super) fn coverage(
+    cx: &Cx,
+    chart: ChartId,
+    assume: &[&Expr],
+    trigger: Option<VarId>,
+    dest: &Dest,
+) -> Coverage {
     if structurally_valid(dest) {
         return Coverage::Always;
     }
@@ -77,8 +83,14 @@ pub(super) fn coverage(cx: &Cx, chart: ChartId, assume: &[&Expr], trigger: Optio
         domains.push((lo, hi));
     }
     let size = |(lo, hi): (i64, i64)| hi as i128 - lo as i128 + 1;
+    if domains.iter().any(|d| size(*d) < 1) {
+        return Coverage::Unknown;
+    }
+    let product = domains
+        .iter()
+        .try_fold(1u128, |acc, d| acc.checked_mul(size(*d) as u128));
     let full: Vec<bool> = if domains.iter().all(|d| size(*d) <= FULL_DOMAIN)
-        && domains.iter().map(|d| size(*d) as u128).product::<u128>() <= MAX_VALUATIONS
+        && product.is_some_and(|p| p <= MAX_VALUATIONS)
     {
         vec![true; domains.len()]
     } else {
@@ -96,7 +108,9 @@ pub(super) fn coverage(cx: &Cx, chart: ChartId, assume: &[&Expr], trigger: Optio
             }
         })
         .collect();
-    let total = values.iter().try_fold(1u128, |acc, v| acc.checked_mul(v.len() as u128));
+    let total = values
+        .iter()
+        .try_fold(1u128, |acc, v| acc.checked_mul(v.len() as u128));
     if total.is_none_or(|t| t > MAX_VALUATIONS) || values.iter().any(Vec::is_empty) {
         return Coverage::Unknown;
     }
@@ -104,7 +118,10 @@ pub(super) fn coverage(cx: &Cx, chart: ChartId, assume: &[&Expr], trigger: Optio
     let mut index = vec![0usize; values.len()];
     let mut env: Vec<i64> = values.iter().map(|v| v[0]).collect();
     loop {
-        let ev = Eval { atoms: &atoms, env: &env };
+        let ev = Eval {
+            atoms: &atoms,
+            env: &env,
+        };
         let mut holds = true;
         for e in assume {
             match ev.eval(e) {
@@ -116,7 +133,13 @@ pub(super) fn coverage(cx: &Cx, chart: ChartId, assume: &[&Expr], trigger: Optio
         if holds {
             match ev.valid(dest) {
                 Some(true) => {}
-                Some(false) => return if has_in { Coverage::Unknown } else { Coverage::Gap },
+                Some(false) => {
+                    return if has_in {
+                        Coverage::Unknown
+                    } else {
+                        Coverage::Gap
+                    }
+                }
                 None => return Coverage::Unknown,
             }
         }
@@ -124,7 +147,11 @@ pub(super) fn coverage(cx: &Cx, chart: ChartId, assume: &[&Expr], trigger: Optio
         let mut k = 0;
         loop {
             if k == index.len() {
-                return if exact { Coverage::Always } else { Coverage::Unknown };
+                return if exact {
+                    Coverage::Always
+                } else {
+                    Coverage::Unknown
+                };
             }
             index[k] += 1;
             if index[k] < values[k].len() {
@@ -187,6 +214,11 @@ fn collect(e: &Expr, atoms: &mut Vec<Atom>, consts: &mut Vec<i64>) {
             collect(b, atoms, consts);
         }
         ExprKind::Builtin(_, args) => args.iter().for_each(|a| collect(a, atoms, consts)),
+        ExprKind::Let(_, v, b) => {
+            collect(v, atoms, consts);
+            collect(b, atoms, consts);
+        }
+        ExprKind::Local(_) => {}
     }
 }
 
@@ -226,6 +258,9 @@ impl Eval<'_> {
                 }
             }
             ExprKind::Check(a, lo, hi) => self.eval(a).filter(|v| (*lo..=*hi).contains(v)),
+            // Substitute the bound value: a local is its value, evaluated again here.
+            ExprKind::Let(id, v, b) => self.eval(&substitute(b, *id, v)),
+            ExprKind::Local(_) => None,
         }
     }
 
@@ -246,5 +281,30 @@ impl Eval<'_> {
                 Some(false)
             }
         }
+    }
+}
+
+/// `body` with every `Local(id)` replaced by `value` (for this evaluator only).
+fn substitute(body: &Expr, id: u32, value: &Expr) -> Expr {
+    let mut out = body.clone();
+    replace(&mut out, id, value);
+    out
+}
+
+fn replace(e: &mut Expr, id: u32, value: &Expr) {
+    match &mut e.kind {
+        ExprKind::Local(l) if *l == id => *e = value.clone(),
+        ExprKind::Const(_) | ExprKind::Var(_) | ExprKind::In(_) | ExprKind::Local(_) => {}
+        ExprKind::Unary(_, a) | ExprKind::Check(a, _, _) => replace(a, id, value),
+        ExprKind::Binary(_, a, b) | ExprKind::Let(_, a, b) => {
+            replace(a, id, value);
+            replace(b, id, value);
+        }
+        ExprKind::If(c, a, b) => {
+            replace(c, id, value);
+            replace(a, id, value);
+            replace(b, id, value);
+        }
+        ExprKind::Builtin(_, args) => args.iter_mut().for_each(|a| replace(a, id, value)),
     }
 }

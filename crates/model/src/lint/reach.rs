@@ -36,10 +36,15 @@ pub(super) fn check(cx: &Cx, chart_id: ChartId, out: &mut Vec<Diagnostic>) {
         if node.is_region || cx.is_observer_error(chart_id, s) || incoming[s as usize] {
             continue;
         }
-        let NodeKind::Or { children, initial, .. } = &chart.states[parent as usize].kind else {
+        let NodeKind::Or {
+            children, initial, ..
+        } = &chart.states[parent as usize].kind
+        else {
             continue;
         };
-        let Some(&init) = children.get(*initial) else { continue };
+        let Some(&init) = children.get(*initial) else {
+            continue;
+        };
         if init == s {
             continue;
         }
@@ -56,8 +61,22 @@ pub(super) fn check(cx: &Cx, chart_id: ChartId, out: &mut Vec<Diagnostic>) {
     }
 
     for (p, node) in chart.states.iter().enumerate() {
-        let NodeKind::Or { children, initial, .. } = &node.kind else { continue };
-        isolated(cx, chart_id, chart, p as StateId, children, *initial, &no_incoming, out);
+        let NodeKind::Or {
+            children, initial, ..
+        } = &node.kind
+        else {
+            continue;
+        };
+        isolated(
+            cx,
+            chart_id,
+            chart,
+            p as StateId,
+            children,
+            *initial,
+            &no_incoming,
+            out,
+        );
     }
 }
 
@@ -136,10 +155,18 @@ fn isolated(
             node.span,
         )
         .with_label("part of an isolated sub-graph")
-        .with_secondary(chart.states[init as usize].span, "the initial state of this level");
+        .with_secondary(
+            chart.states[init as usize].span,
+            "the initial state of this level",
+        );
         if let Some(span) = first_edge[i] {
-            d = d.with_secondary(span, "entered only from states that are never reached themselves");
+            d = d.with_secondary(
+                span,
+                "entered only from states that are never reached themselves",
+            );
         }
-        out.push(d.with_hint("connect the isolated states to the rest of this level, or remove them"));
+        out.push(
+            d.with_hint("connect the isolated states to the rest of this level, or remove them"),
+        );
     }
 }

@@ -12,7 +12,11 @@ pub(super) fn check(cx: &Cx, chart_id: ChartId, out: &mut Vec<Diagnostic>) {
     let chart = &cx.model.charts[chart_id as usize];
     for (s, node) in chart.states.iter().enumerate() {
         let s = s as StateId;
-        let own: Vec<&Transition> = node.transitions.iter().map(|t| &chart.transitions[*t as usize]).collect();
+        let own: Vec<&Transition> = node
+            .transitions
+            .iter()
+            .map(|t| &chart.transitions[*t as usize])
+            .collect();
         equal_priorities(&own, out);
         shadowed(cx, chart_id, chart, s, &own, out);
         for t in &own {
@@ -51,32 +55,53 @@ fn equal_priorities(own: &[&Transition], out: &mut Vec<Diagnostic>) {
 
 /// W0304: a transition that never fires because an earlier one with the same trigger (or none)
 /// is always enabled when it is.
-fn shadowed(cx: &Cx, chart_id: ChartId, chart: &Chart, s: StateId, own: &[&Transition], out: &mut Vec<Diagnostic>) {
+fn shadowed(
+    cx: &Cx,
+    chart_id: ChartId,
+    chart: &Chart,
+    s: StateId,
+    own: &[&Transition],
+    out: &mut Vec<Diagnostic>,
+) {
     // always[i]: transition i fires whenever its trigger occurs (no real guard, and its
     // destination cannot fail).
+    // (Only worth deciding when a later transition could be shadowed by it.)
     let always: Vec<bool> = own
         .iter()
-        .map(|t| {
+        .enumerate()
+        .map(|(i, t)| {
             let unguarded = t.guard.as_ref().is_none_or(const_true);
             let trigger = match t.trigger {
                 Trigger::Event(e) => Some(e),
                 _ => None,
             };
-            unguarded && coverage(cx, chart_id, &[], trigger, &t.dest) == Coverage::Always
+            let victims = own[i + 1..]
+                .iter()
+                .any(|u| t.trigger == Trigger::None || t.trigger == u.trigger);
+            unguarded
+                && victims
+                && coverage(cx, chart_id, &[], trigger, &t.dest) == Coverage::Always
         })
         .collect();
     for (j, t) in own.iter().enumerate() {
         if t.guard.as_ref().is_some_and(const_false) {
             continue; // W0305 says it better
         }
-        let earlier = (0..j).find(|&i| always[i] && (own[i].trigger == Trigger::None || own[i].trigger == t.trigger));
+        let earlier = (0..j).find(|&i| {
+            always[i] && (own[i].trigger == Trigger::None || own[i].trigger == t.trigger)
+        });
         let Some(i) = earlier else { continue };
         let u = own[i];
         let name = state_name(cx.model, chart_id, s);
         let what = match u.trigger {
             Trigger::None => format!("an earlier transition of `{name}` fires in every step"),
-            Trigger::Event(e) => format!("an earlier transition of `{name}` always fires on `{}`", chart.vars[e as usize].name),
-            Trigger::After(n) => format!("an earlier transition of `{name}` always fires after {n} ticks"),
+            Trigger::Event(e) => format!(
+                "an earlier transition of `{name}` always fires on `{}`",
+                chart.vars[e as usize].name
+            ),
+            Trigger::After(n) => {
+                format!("an earlier transition of `{name}` always fires after {n} ticks")
+            }
         };
         out.push(
             Diagnostic::warning("W0304", format!("this transition can never fire: {what}"), t.span)
@@ -88,7 +113,13 @@ fn shadowed(cx: &Cx, chart_id: ChartId, chart: &Chart, s: StateId, own: &[&Trans
 }
 
 /// W0306: an external self-transition of a composite state.
-fn self_transition(cx: &Cx, chart_id: ChartId, chart: &Chart, t: &Transition, out: &mut Vec<Diagnostic>) {
+fn self_transition(
+    cx: &Cx,
+    chart_id: ChartId,
+    chart: &Chart,
+    t: &Transition,
+    out: &mut Vec<Diagnostic>,
+) {
     let node = &chart.states[t.source as usize];
     if matches!(node.kind, NodeKind::Simple) {
         return;
@@ -142,10 +173,16 @@ fn dest_rules<'m>(
         };
         let last = branches.last().map_or(at, |b| b.span);
         out.push(
-            Diagnostic::warning("W0307", "choice without `else` whose guards can all be false", at)
-                .with_label(label)
-                .with_secondary(last, "no `else` after this branch")
-                .with_hint("add `else -> ...;` as the last branch, or make the guards cover every case"),
+            Diagnostic::warning(
+                "W0307",
+                "choice without `else` whose guards can all be false",
+                at,
+            )
+            .with_label(label)
+            .with_secondary(last, "no `else` after this branch")
+            .with_hint(
+                "add `else -> ...;` as the last branch, or make the guards cover every case",
+            ),
         );
     }
     let mut taken_always: Option<Span> = None;
@@ -158,10 +195,14 @@ fn dest_rules<'m>(
         }
         if let Some(first) = taken_always {
             out.push(
-                Diagnostic::warning("W0304", "this branch can never be taken: an earlier branch is always taken", b.span)
-                    .with_label("shadowed")
-                    .with_secondary(first, "always taken first")
-                    .with_hint("remove the branch, or give the earlier one a guard"),
+                Diagnostic::warning(
+                    "W0304",
+                    "this branch can never be taken: an earlier branch is always taken",
+                    b.span,
+                )
+                .with_label("shadowed")
+                .with_secondary(first, "always taken first")
+                .with_hint("remove the branch, or give the earlier one a guard"),
             );
             continue;
         }

@@ -44,7 +44,11 @@ impl Usage {
 
     fn expr(&mut self, cx: &Cx, site: Site, e: &Expr, except: Option<VarId>) {
         match &e.kind {
-            ExprKind::Const(_) | ExprKind::In(_) => {}
+            ExprKind::Const(_) | ExprKind::In(_) | ExprKind::Local(_) => {}
+            ExprKind::Let(_, v, b) => {
+                self.expr(cx, site, v, except);
+                self.expr(cx, site, b, except);
+            }
             ExprKind::Var(r) => self.read_ref(cx, site, *r, except),
             ExprKind::Unary(_, a) | ExprKind::Check(a, _, _) => self.expr(cx, site, a, except),
             ExprKind::Binary(_, a, b) => {
@@ -63,12 +67,18 @@ impl Usage {
     fn stmts(&mut self, cx: &Cx, chart: ChartId, stmts: &[Stmt]) {
         for s in stmts {
             match s {
-                Stmt::Assign { var, value, span, .. } => {
+                Stmt::Assign {
+                    var, value, span, ..
+                } => {
                     self.write(chart, *var, *span);
                     self.expr(cx, Site::Chart(chart), value, Some(*var));
                 }
                 Stmt::Raise { event, span } => self.write(chart, *event, *span),
-                Stmt::If { cond, then, otherwise } => {
+                Stmt::If {
+                    cond,
+                    then,
+                    otherwise,
+                } => {
                     self.expr(cx, Site::Chart(chart), cond, None);
                     self.stmts(cx, chart, then);
                     self.stmts(cx, chart, otherwise);
@@ -102,7 +112,9 @@ impl Usage {
                 }
             }
             PropertyKind::Reachable { expr } => self.expr(cx, site, expr, None),
-            PropertyKind::Respond { trigger, response, .. } => {
+            PropertyKind::Respond {
+                trigger, response, ..
+            } => {
                 self.expr(cx, site, trigger, None);
                 self.expr(cx, site, response, None);
             }
@@ -114,8 +126,16 @@ impl Usage {
 pub(super) fn check(cx: &Cx, out: &mut Vec<Diagnostic>) {
     let model = cx.model;
     let mut u = Usage {
-        read: model.charts.iter().map(|c| vec![false; c.vars.len()]).collect(),
-        written: model.charts.iter().map(|c| vec![None; c.vars.len()]).collect(),
+        read: model
+            .charts
+            .iter()
+            .map(|c| vec![false; c.vars.len()])
+            .collect(),
+        written: model
+            .charts
+            .iter()
+            .map(|c| vec![None; c.vars.len()])
+            .collect(),
     };
     for (id, chart) in model.charts.iter().enumerate() {
         let id = id as ChartId;
@@ -149,7 +169,11 @@ pub(super) fn check(cx: &Cx, out: &mut Vec<Diagnostic>) {
         }
         for c in &s.connections {
             if let Some(inst) = s.instances.get(c.from.0 as usize) {
-                if let Some(r) = u.read.get_mut(inst.chart as usize).and_then(|v| v.get_mut(c.from.1 as usize)) {
+                if let Some(r) = u
+                    .read
+                    .get_mut(inst.chart as usize)
+                    .and_then(|v| v.get_mut(c.from.1 as usize))
+                {
                     *r = true;
                 }
             }
@@ -164,29 +188,44 @@ pub(super) fn check(cx: &Cx, out: &mut Vec<Diagnostic>) {
             let d = match (var.kind, var.is_event) {
                 (VarKind::Input, _) if !read => Diagnostic::warning(
                     "W0308",
-                    format!("input {} `{name}` is never used", if var.is_event { "event" } else { "variable" }),
+                    format!(
+                        "input {} `{name}` is never used",
+                        if var.is_event { "event" } else { "variable" }
+                    ),
                     var.span,
                 )
                 .with_label("never read")
-                .with_hint(format!("remove `{name}`, or use it in a guard, trigger or action")),
-                (VarKind::Output, false) if written.is_none() => {
-                    Diagnostic::warning("W0308", format!("output `{name}` is never written"), var.span)
-                        .with_label(format!("always {}", model.format_value(var.ty, var.init)))
-                        .with_hint(format!("assign `{name}` in an action, or remove it"))
-                }
-                (VarKind::Output, true) if written.is_none() => {
-                    Diagnostic::warning("W0308", format!("output event `{name}` is never raised"), var.span)
-                        .with_label("never raised")
-                        .with_hint(format!("`raise {name};` in an action, or remove it"))
-                }
-                (VarKind::Local, false) if !read && written.is_none() => {
-                    Diagnostic::warning("W0308", format!("local variable `{name}` is never used"), var.span)
-                        .with_label("never read or written")
-                        .with_hint(format!("remove `{name}`"))
-                }
+                .with_hint(format!(
+                    "remove `{name}`, or use it in a guard, trigger or action"
+                )),
+                (VarKind::Output, false) if written.is_none() => Diagnostic::warning(
+                    "W0308",
+                    format!("output `{name}` is never written"),
+                    var.span,
+                )
+                .with_label(format!("always {}", model.format_value(var.ty, var.init)))
+                .with_hint(format!("assign `{name}` in an action, or remove it")),
+                (VarKind::Output, true) if written.is_none() => Diagnostic::warning(
+                    "W0308",
+                    format!("output event `{name}` is never raised"),
+                    var.span,
+                )
+                .with_label("never raised")
+                .with_hint(format!("`raise {name};` in an action, or remove it")),
+                (VarKind::Local, false) if !read && written.is_none() => Diagnostic::warning(
+                    "W0308",
+                    format!("local variable `{name}` is never used"),
+                    var.span,
+                )
+                .with_label("never read or written")
+                .with_hint(format!("remove `{name}`")),
                 (VarKind::Local, true) if written.is_none() => {
-                    let d = Diagnostic::warning("W0308", format!("local event `{name}` is never raised"), var.span)
-                        .with_label("never raised");
+                    let d = Diagnostic::warning(
+                        "W0308",
+                        format!("local event `{name}` is never raised"),
+                        var.span,
+                    )
+                    .with_label("never raised");
                     if read {
                         d.with_hint(format!("transitions triggered by `{name}` can never fire; `raise {name};` in an action"))
                     } else {

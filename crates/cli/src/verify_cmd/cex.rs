@@ -1,0 +1,132 @@
+//! Counterexamples: scenario files in the simulator's format, replayed through the simulator
+//! for the table (and the VCD), and checked to stop where the checker says.
+
+use crate::load::Loaded;
+use crate::output::{self, view::Views};
+use anyhow::{Context, Result};
+use statecheck_explicit::{PropKind, Report};
+use statecheck_ir::Program;
+use statecheck_sim::{scenario, Options, ScenarioInputs, Stop, TickRecord};
+
+/// A counterexample or witness after replay.
+pub struct Cex {
+    /// Where its scenario was written, if it was.
+    pub path: Option<String>,
+    /// The simulator's trace of it.
+    pub trace: Vec<TickRecord>,
+    /// The tick that decides the property (the last one).
+    pub tick: u64,
+    /// Set when the simulator does not stop at the same property and tick (it stops earlier,
+    /// at another property violated on the way).
+    pub mismatch: Option<String>,
+}
+
+/// Write and replay every counterexample of `rep` (index-aligned with `rep.results`).
+pub fn process(
+    loaded: &Loaded,
+    program: &Program,
+    rep: &Report,
+    dir: Option<&str>,
+    vcd: bool,
+) -> Result<Vec<Option<Cex>>> {
+    if let Some(d) = dir {
+        std::fs::create_dir_all(d).with_context(|| format!("cannot create `{d}`"))?;
+    }
+    let views = Views::new(&loaded.model, program);
+    let mut out = Vec::with_capacity(rep.results.len());
+    for r in &rep.results {
+        let Some(vectors) = &r.counterexample else {
+            out.push(None);
+            continue;
+        };
+        let sc = scenario::from_input_vectors(program, vectors);
+        let run = statecheck_sim::run(program, &mut ScenarioInputs::new(&sc), Options::default());
+        let tick = r.depth.saturating_sub(1);
+        let mismatch = match (&run.stop, r.kind) {
+            (_, PropKind::Reachable) => {
+                let at = run
+                    .reached
+                    .iter()
+                    .find(|(n, _)| *n == r.name)
+                    .and_then(|(_, t)| *t);
+                (at != Some(tick)).then(|| {
+                    format!(
+                        "the simulator ended with {} before seeing `{}` at tick {tick}",
+                        describe(&run.stop),
+                        r.name
+                    )
+                })
+            }
+            (Stop::Violation { tick: t, property }, _) => (!(*property == r.name && *t == tick))
+                .then(|| {
+                    format!(
+                        "the simulator stops earlier: property `{property}` violated at tick {t}"
+                    )
+                }),
+            (Stop::RuntimeError { tick: t, error }, PropKind::Builtin)
+                if error.kind.builtin_property() == r.name && *t == tick =>
+            {
+                None
+            }
+            (stop, _) => Some(format!(
+                "the simulator ended with {} instead",
+                describe(stop)
+            )),
+        };
+        let path = match dir {
+            Some(d) => {
+                let file = format!("{d}/{}.scn", file_name(&r.name));
+                let mut text = scenario::format(&sc, program);
+                text.insert_str(0, &format!("# counterexample for `{}` ({}, {}): {} ticks; replay with\n#   statecheck sim {} --system {} --scenario {file}\n", r.name, r.kind.as_str(), r.verdict.as_str(), r.depth, loaded.path, program.name));
+                std::fs::write(&file, text).with_context(|| format!("cannot write `{file}`"))?;
+                if vcd {
+                    let vfile = format!("{d}/{}.vcd", file_name(&r.name));
+                    let text = output::vcd::render(
+                        program,
+                        &views,
+                        &run.trace,
+                        loaded.model.tick_ms.unwrap_or(1),
+                    );
+                    std::fs::write(&vfile, text)
+                        .with_context(|| format!("cannot write `{vfile}`"))?;
+                }
+                Some(file)
+            }
+            None => None,
+        };
+        out.push(Some(Cex {
+            path,
+            trace: run.trace,
+            tick,
+            mismatch,
+        }));
+    }
+    Ok(out)
+}
+
+fn describe(stop: &Stop) -> String {
+    match stop {
+        Stop::Completed => "the scenario completed".into(),
+        Stop::RuntimeError { tick, error } => format!(
+            "a run-time error ({}) at tick {tick}",
+            error.kind.builtin_property()
+        ),
+        Stop::Violation { tick, property } => {
+            format!("property `{property}` violated at tick {tick}")
+        }
+        Stop::AssumeViolated { tick, .. } => format!("an `assume` violated at tick {tick}"),
+    }
+}
+
+/// A property name usable as a file name.
+fn file_name(name: &str) -> String {
+    name.chars()
+        .map(|c| {
+            if c.is_ascii_alphanumeric() || c == '_' || c == '-' {
+                c
+            } else {
+                '_'
+            }
+        })
+        .collect()
+}

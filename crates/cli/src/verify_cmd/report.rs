@@ -1,0 +1,267 @@
+//! Rendering a verification report: the branching notice, the JSON contract, and the text
+//! (verdict table, statistics, dead design, counterexample tables).
+
+use super::cex::Cex;
+use crate::load::Loaded;
+use crate::output::{table, view::Views};
+use serde_json::{json, Value};
+use statecheck_base::LineIndex;
+use statecheck_explicit::{human_bytes, InputSpace, Options, Report, Stats, Verdict};
+use statecheck_ir::{CoverKind, Program};
+use std::fmt::Write;
+
+/// Above this many input vectors per tick, suggest `assume`s even when the run goes ahead.
+const LARGE_BRANCHING: u128 = 10_000;
+
+/// Print the branching factor up front (stderr) and advise when it is large.
+pub fn announce_branching(p: &Program, opts: &Options, quiet: bool) {
+    let mut space = InputSpace::new(p);
+    space.solve_static(p);
+    let n = space.effective().unwrap_or(space.count);
+    let after = match space.effective() {
+        Some(e) if e != space.count => format!(" ({e} allowed by the assumes)"),
+        _ => String::new(),
+    };
+    if !quiet {
+        eprintln!("branching: {} input vector(s) per tick{after}", space.count);
+    }
+    if n > opts.max_branching && !opts.force {
+        eprintln!(
+            "error: {n} input vectors per tick is too many to enumerate in every state; constrain the inputs with `assume` (e.g. `assume fam.targetPos == 0 || fam.targetPos == 4095;`), or use --force to explore anyway"
+        );
+    } else if n > LARGE_BRANCHING && !quiet {
+        eprintln!("warning: {n} input vectors per tick make every state expensive; consider `assume` constraints on the widest inputs");
+    }
+}
+
+fn num(v: u128) -> Value {
+    u64::try_from(v).map_or_else(|_| json!(v.to_string()), |x| json!(x))
+}
+
+/// The JSON object of `statecheck verify --json`.
+pub fn json(p: &Program, source: &str, rep: &Report, cexs: &[Option<Cex>]) -> Value {
+    let s = &rep.stats;
+    let results: Vec<Value> = rep
+        .results
+        .iter()
+        .zip(cexs)
+        .map(|(r, c)| {
+            let mut o = json!({
+                "property": r.name,
+                "kind": r.kind.as_str(),
+                "verdict": r.verdict.as_str(),
+                "engine": "explicit",
+                "depth": r.depth,
+                "states": s.states,
+                "transitions": s.transitions,
+                "time_s": s.time.as_secs_f64(),
+                "counterexample": c.as_ref().and_then(|c| c.path.clone()),
+            });
+            if let Some(c) = c {
+                o["tick"] = json!(c.tick);
+                if let Some(m) = &c.mismatch {
+                    o["replay_note"] = json!(m);
+                }
+            }
+            if let Some(e) = &r.error {
+                o["message"] = json!(p.describe_error(e));
+            }
+            if let Some(n) = &r.note {
+                o["note"] = json!(n);
+            }
+            if r.verdict == Verdict::Unknown {
+                o["reason"] = json!(s.limit.as_ref().map_or_else(
+                    || "every other property was decided first".to_string(),
+                    |l| l.describe()
+                ));
+            }
+            o
+        })
+        .collect();
+    let dead = s.dead.as_ref().map(|d| dead_json(p, source, d));
+    json!({
+        "results": results,
+        "stats": {
+            "states": s.states,
+            "transitions": s.transitions,
+            "depth": s.depth,
+            "time_s": s.time.as_secs_f64(),
+            "cex_time_s": s.cex_time.as_secs_f64(),
+            "peak_memory_bytes": s.peak_memory_bytes,
+            "peak_rss_bytes": peak_rss(),
+            "table_bytes": s.table_bytes,
+            "bytes_per_state": s.bytes_per_state(),
+            "states_per_s": s.states_per_s(),
+            "branching": num(s.branching),
+            "branching_after_assumes": s.branching_after_assumes.map(num),
+            "threads": s.threads,
+            "state_bits": s.state_bits,
+            "complete": s.complete,
+            "limit": s.limit.as_ref().map(|l| json!({"kind": l.name(), "message": l.describe()})),
+            "dead": dead,
+        }
+    })
+}
+
+fn dead_json(p: &Program, source: &str, dead: &[u32]) -> Value {
+    let idx = LineIndex::new(source);
+    dead.iter()
+        .filter_map(|&c| p.covers.get(c as usize))
+        .map(|c| {
+            let (line, col) = idx.line_col(c.span.start);
+            json!({"instance": p.instances[c.instance as usize].name, "kind": cover_kind(&c.kind), "label": c.label, "line": line, "col": col})
+        })
+        .collect()
+}
+
+fn cover_kind(k: &CoverKind) -> &'static str {
+    match k {
+        CoverKind::State(_) => "state",
+        CoverKind::Transition(_) => "transition",
+        CoverKind::Branch(..) => "branch",
+    }
+}
+
+/// Peak resident set size of this process (Linux), in bytes.
+fn peak_rss() -> Option<u64> {
+    let status = std::fs::read_to_string("/proc/self/status").ok()?;
+    let line = status.lines().find(|l| l.starts_with("VmHWM:"))?;
+    line.split_whitespace()
+        .nth(1)?
+        .parse::<u64>()
+        .ok()
+        .map(|k| k * 1024)
+}
+
+/// The human-readable report.
+pub fn text(
+    loaded: &Loaded,
+    p: &Program,
+    rep: &Report,
+    cexs: &[Option<Cex>],
+    quiet: bool,
+) -> String {
+    let mut out = String::new();
+    let w = rep
+        .results
+        .iter()
+        .map(|r| r.name.len())
+        .max()
+        .unwrap_or(8)
+        .max(8);
+    let _ = writeln!(
+        out,
+        "{:<w$}  {:<9}  {:<11}  depth",
+        "property", "kind", "verdict"
+    );
+    for r in &rep.results {
+        let _ = writeln!(
+            out,
+            "{:<w$}  {:<9}  {:<11}  {}",
+            r.name,
+            r.kind.as_str(),
+            r.verdict.as_str(),
+            r.depth
+        );
+    }
+    if quiet {
+        return out;
+    }
+    let s = &rep.stats;
+    out.push('\n');
+    out.push_str(&stats_line(s));
+    if let Some(l) = &s.limit {
+        let _ = writeln!(
+            out,
+            "stopped: {} (the statistics are partial)",
+            l.describe()
+        );
+    }
+    if s.all_decided {
+        let _ = writeln!(
+            out,
+            "stopped early: every property was decided (the statistics are partial)"
+        );
+    }
+    if let Some(dead) = &s.dead {
+        let idx = LineIndex::new(&loaded.source);
+        for &c in dead {
+            let Some(c) = p.covers.get(c as usize) else {
+                continue;
+            };
+            let (line, col) = idx.line_col(c.span.start);
+            let what = if matches!(c.kind, CoverKind::State(_)) {
+                "state never entered"
+            } else {
+                "transition never fires"
+            };
+            let _ = writeln!(
+                out,
+                "warning: dead design: {what}: {}: {} ({}:{line}:{col})",
+                p.instances[c.instance as usize].name, c.label, loaded.path
+            );
+        }
+    }
+    let views = Views::new(&loaded.model, p);
+    for (r, c) in rep.results.iter().zip(cexs) {
+        let what = if r.verdict == Verdict::Reachable {
+            "witness"
+        } else {
+            "counterexample"
+        };
+        match c {
+            Some(c) => {
+                let at = match &c.path {
+                    Some(f) => format!(": {f}"),
+                    None => String::new(),
+                };
+                let _ = writeln!(
+                    out,
+                    "\n{what} for `{}` ({}, {} ticks, decided at tick {}){at}",
+                    r.name,
+                    r.kind.as_str(),
+                    r.depth,
+                    c.tick
+                );
+                out.push_str(&table::render(p, &views, &c.trace));
+                if let Some(e) = &r.error {
+                    let _ = writeln!(
+                        out,
+                        "{:>4}  run-time error: {}",
+                        c.tick,
+                        p.describe_error(e)
+                    );
+                }
+                if let Some(m) = &c.mismatch {
+                    let _ = writeln!(out, "note: {m}");
+                }
+            }
+            None => {
+                if let Some(n) = &r.note {
+                    let _ = writeln!(out, "\n{what} for `{}`: {n}", r.name);
+                }
+            }
+        }
+    }
+    out
+}
+
+fn stats_line(s: &Stats) -> String {
+    let after = s
+        .branching_after_assumes
+        .map(|b| format!(", {b} after assumes"))
+        .unwrap_or_default();
+    format!(
+        "{} states, {} transitions, depth {}, {:.2} s ({:.0} states/s), {:.1} bytes/state, peak {}, {} thread(s), {}-bit states, branching {}{after}\n",
+        s.states,
+        s.transitions,
+        s.depth,
+        s.time.as_secs_f64(),
+        s.states_per_s(),
+        s.bytes_per_state(),
+        human_bytes(s.peak_memory_bytes),
+        s.threads,
+        s.state_bits,
+        s.branching,
+    )
+}

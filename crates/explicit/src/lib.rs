@@ -1,0 +1,415 @@
+//! Explicit-state model checking on the IR.
+//!
+//! [`verify`] explores the closed system of a [`Program`] breadth-first from its initial state
+//! (every slot at its `init`, before tick 0): the successors of a state are one tick of the IR
+//! for every input vector within the inputs' ranges that satisfies the `assume`s. Visited states
+//! are stored bit-packed ([`pack`]) in a sharded open-addressing set ([`table`]); layers are
+//! expanded in parallel. Every property of the run is checked on every transition, in one
+//! exploration; the first violation found of each is a shortest one. Counterexamples are
+//! returned as the input vectors of each tick, ready for `statecheck_sim::scenario`.
+//!
+//! To keep the visited set small (no parent pointers), a counterexample is rebuilt after the
+//! exploration by a second search, with parent links, up to the depth of the deepest violation.
+
+mod expand;
+mod inputs;
+pub mod pack;
+pub mod props;
+mod search;
+pub mod table;
+mod trace;
+
+pub use inputs::InputSpace;
+pub use props::{PropKind, BUILTINS};
+
+use expand::Expander;
+use pack::{Key, Packer};
+use search::{search, End, Limits};
+use statecheck_ir::{Program, RuntimeError};
+use std::time::Duration;
+
+/// Above this many input vectors per tick, [`verify`] refuses unless [`Options::force`].
+pub const DEFAULT_MAX_BRANCHING: u128 = 1_000_000;
+
+/// Options of a run.
+#[derive(Clone, Debug)]
+pub struct Options {
+    /// Properties to report (all when empty); the built-ins may be named too.
+    pub properties: Vec<String>,
+    /// Explore at most this many ticks.
+    pub depth: Option<u64>,
+    /// Stop with `unknown` when the estimated memory exceeds this many bytes.
+    pub max_memory: Option<u64>,
+    /// Stop with `unknown` after this many states.
+    pub max_states: Option<u64>,
+    /// Stop with `unknown` after this long.
+    pub timeout: Option<Duration>,
+    /// Worker threads (0: one per core).
+    pub threads: usize,
+    /// Explore even when the branching factor exceeds `max_branching`.
+    pub force: bool,
+    /// The branching factor above which the run is refused without `force`.
+    pub max_branching: u128,
+}
+
+impl Default for Options {
+    fn default() -> Self {
+        Options {
+            properties: Vec::new(),
+            depth: None,
+            max_memory: None,
+            max_states: None,
+            timeout: None,
+            threads: 0,
+            force: false,
+            max_branching: DEFAULT_MAX_BRANCHING,
+        }
+    }
+}
+
+/// A limit that ended a run early.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum Limit {
+    /// The memory estimate exceeded this many bytes.
+    Memory(u64),
+    /// More states than this.
+    States(u64),
+    /// The run took longer than this.
+    Time(Duration),
+    /// Too many input vectors per tick.
+    Branching {
+        /// Input vectors per tick.
+        branching: u128,
+        /// The threshold.
+        max: u128,
+    },
+}
+
+impl Limit {
+    /// A short machine-readable name: `memory`, `states`, `time`, `branching`.
+    pub fn name(&self) -> &'static str {
+        match self {
+            Limit::Memory(_) => "memory",
+            Limit::States(_) => "states",
+            Limit::Time(_) => "time",
+            Limit::Branching { .. } => "branching",
+        }
+    }
+
+    /// A sentence saying what was hit.
+    pub fn describe(&self) -> String {
+        match self {
+            Limit::Memory(m) => format!("memory limit of {} reached", human_bytes(*m)),
+            Limit::States(n) => format!("state limit of {n} reached"),
+            Limit::Time(t) => format!("time limit of {:.1} s reached", t.as_secs_f64()),
+            Limit::Branching { branching, max } => format!(
+                "branching factor {branching} exceeds {max} input vectors per tick; not explored"
+            ),
+        }
+    }
+}
+
+/// Format a byte count with a binary unit.
+pub fn human_bytes(b: u64) -> String {
+    const UNITS: [&str; 5] = ["B", "KiB", "MiB", "GiB", "TiB"];
+    let mut v = b as f64;
+    let mut u = 0;
+    while v >= 1024.0 && u + 1 < UNITS.len() {
+        v /= 1024.0;
+        u += 1;
+    }
+    if u == 0 {
+        format!("{b} B")
+    } else {
+        format!("{v:.1} {}", UNITS[u])
+    }
+}
+
+/// The answer for one property.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Verdict {
+    /// Holds in every reachable state (exhaustive).
+    Proved,
+    /// A counterexample exists.
+    Violated,
+    /// A `reachable` target was reached (a witness exists).
+    Reachable,
+    /// A `reachable` target is reached in no reachable state (exhaustive).
+    Unreachable,
+    /// Nothing found up to the depth bound.
+    Bounded,
+    /// A limit stopped the run before an answer.
+    Unknown,
+}
+
+impl Verdict {
+    /// The JSON and table word.
+    pub fn as_str(self) -> &'static str {
+        match self {
+            Verdict::Proved => "proved",
+            Verdict::Violated => "violated",
+            Verdict::Reachable => "reachable",
+            Verdict::Unreachable => "unreachable",
+            Verdict::Bounded => "bounded",
+            Verdict::Unknown => "unknown",
+        }
+    }
+}
+
+/// The result for one property.
+#[derive(Clone, Debug)]
+pub struct PropResult {
+    /// Property name.
+    pub name: String,
+    /// Its kind.
+    pub kind: PropKind,
+    /// The verdict.
+    pub verdict: Verdict,
+    /// Ticks of the counterexample or witness; otherwise the depth explored.
+    pub depth: u64,
+    /// The input vectors of each tick (in `Program::inputs` order) of a shortest
+    /// counterexample or witness, ending with the deciding tick.
+    pub counterexample: Option<Vec<Vec<i64>>>,
+    /// The run-time error, for a violated built-in property.
+    pub error: Option<RuntimeError>,
+    /// Why a counterexample is missing, if it is.
+    pub note: Option<String>,
+}
+
+/// Statistics of a run.
+#[derive(Clone, Debug, Default)]
+pub struct Stats {
+    /// Distinct states stored (including the initial, pre-tick-0 state).
+    pub states: u64,
+    /// Transitions taken (input vectors satisfying the assumes, from every explored state).
+    pub transitions: u64,
+    /// Deepest layer reached, in ticks.
+    pub depth: u64,
+    /// Wall time of the exploration (without counterexample reconstruction).
+    pub time: Duration,
+    /// Wall time of counterexample reconstruction.
+    pub cex_time: Duration,
+    /// Largest memory estimate of the exploration.
+    pub peak_memory_bytes: u64,
+    /// Bytes of the visited set.
+    pub table_bytes: u64,
+    /// Input vectors per tick before `assume`s (saturating).
+    pub branching: u128,
+    /// Input vectors per tick allowed by the `assume`s, when they read only inputs (then they
+    /// are solved once, up front).
+    pub branching_after_assumes: Option<u128>,
+    /// Worker threads.
+    pub threads: usize,
+    /// Bits of a packed state vector.
+    pub state_bits: u32,
+    /// True when every reachable state was explored.
+    pub complete: bool,
+    /// The limit that stopped the run, if any.
+    pub limit: Option<Limit>,
+    /// True when the run stopped because every property was decided.
+    pub all_decided: bool,
+    /// Coverage items never hit (indices into `Program::covers`), after a complete run.
+    pub dead: Option<Vec<u32>>,
+}
+
+impl Stats {
+    /// States per second of exploration.
+    pub fn states_per_s(&self) -> f64 {
+        self.states as f64 / self.time.as_secs_f64().max(1e-9)
+    }
+
+    /// Bytes of the visited set per stored state.
+    pub fn bytes_per_state(&self) -> f64 {
+        self.table_bytes as f64 / (self.states.max(1)) as f64
+    }
+}
+
+/// The outcome of [`verify`].
+#[derive(Clone, Debug)]
+pub struct Report {
+    /// One result per checked property, the system's in declaration order, then built-ins.
+    pub results: Vec<PropResult>,
+    /// Statistics.
+    pub stats: Stats,
+}
+
+/// Progress of a running exploration, reported after every block of states.
+#[derive(Clone, Debug)]
+pub struct Progress {
+    /// The layer being expanded.
+    pub depth: u64,
+    /// States stored.
+    pub states: u64,
+    /// Transitions taken.
+    pub transitions: u64,
+    /// States in the layer being expanded.
+    pub frontier: u64,
+    /// Memory estimate.
+    pub memory_bytes: u64,
+    /// Time since the start.
+    pub elapsed: Duration,
+}
+
+/// Verify `program`'s properties. Errs only on a bad option (an unknown property name, a
+/// thread pool that cannot start).
+pub fn verify(
+    program: &Program,
+    opts: &Options,
+    progress: Option<&(dyn Fn(&Progress) + Sync)>,
+) -> Result<Report, String> {
+    let specs = props::select(program, &opts.properties)?;
+    let mut space = InputSpace::new(program);
+    space.solve_static(program);
+    let packer = Packer::new(program);
+    let threads = if opts.threads == 0 {
+        std::thread::available_parallelism().map_or(1, usize::from)
+    } else {
+        opts.threads
+    };
+    let mut stats = Stats {
+        branching: space.count,
+        branching_after_assumes: space.effective(),
+        threads,
+        state_bits: packer.bits,
+        ..Stats::default()
+    };
+    let branching = space.effective().unwrap_or(space.count);
+    let too_wide =
+        space.count > u128::from(u32::MAX) || (branching > opts.max_branching && !opts.force);
+    if too_wide {
+        let limit = Limit::Branching {
+            branching,
+            max: if opts.force {
+                u128::from(u32::MAX)
+            } else {
+                opts.max_branching
+            },
+        };
+        let results = specs
+            .iter()
+            .map(|s| PropResult {
+                name: s.name.clone(),
+                kind: s.kind,
+                verdict: Verdict::Unknown,
+                depth: 0,
+                counterexample: None,
+                error: None,
+                note: None,
+            })
+            .collect();
+        stats.limit = Some(limit);
+        return Ok(Report { results, stats });
+    }
+    let pool = rayon::ThreadPoolBuilder::new()
+        .num_threads(threads)
+        .build()
+        .map_err(|e| format!("cannot start {threads} threads: {e}"))?;
+    let exp = Expander {
+        program,
+        packer: &packer,
+        space: &space,
+        specs: &specs,
+        coverage: true,
+    };
+    let report = pool.install(|| {
+        if packer.bits <= 63 {
+            run::<u64>(&exp, opts, stats, progress)
+        } else if packer.bits <= 127 {
+            run::<u128>(&exp, opts, stats, progress)
+        } else {
+            run::<Box<[u64]>>(&exp, opts, stats, progress)
+        }
+    });
+    Ok(report)
+}
+
+fn run<K: Key>(
+    exp: &Expander,
+    opts: &Options,
+    mut stats: Stats,
+    progress: Option<&(dyn Fn(&Progress) + Sync)>,
+) -> Report {
+    let limits = Limits {
+        depth: opts.depth,
+        max_memory: opts.max_memory,
+        max_states: opts.max_states,
+        timeout: opts.timeout,
+    };
+    let s = search::<K>(exp, limits, None, progress);
+    stats.states = s.states;
+    stats.transitions = s.transitions;
+    stats.depth = s.depth;
+    stats.time = s.elapsed;
+    stats.peak_memory_bytes = s.peak_bytes;
+    stats.table_bytes = s.table_bytes;
+    stats.complete = s.end == End::Complete;
+    stats.all_decided = s.end == End::AllDecided;
+    if let End::Limit(l) = &s.end {
+        stats.limit = Some(l.clone());
+    }
+    if stats.complete {
+        stats.dead = s.covered.as_ref().map(|c| {
+            c.iter()
+                .enumerate()
+                .filter(|(_, hit)| !**hit)
+                .map(|(i, _)| i as u32)
+                .collect()
+        });
+    }
+    let cex_start = std::time::Instant::now();
+    let traces = trace::rebuild::<K>(exp, &s.found, opts.max_memory);
+    stats.cex_time = cex_start.elapsed();
+    let results = exp
+        .specs
+        .iter()
+        .zip(s.found)
+        .zip(traces)
+        .map(|((spec, found), tr)| {
+            let reach = spec.kind == PropKind::Reachable;
+            match found {
+                Some((layer, f)) => {
+                    let (counterexample, note) = match tr {
+                        Ok(c) => (Some(c), None),
+                        Err(why) => (None, Some(why)),
+                    };
+                    PropResult {
+                        name: spec.name.clone(),
+                        kind: spec.kind,
+                        verdict: if reach {
+                            Verdict::Reachable
+                        } else {
+                            Verdict::Violated
+                        },
+                        depth: layer + 1,
+                        counterexample,
+                        error: f.error,
+                        note,
+                    }
+                }
+                None => {
+                    let verdict = match &s.end {
+                        End::Complete => {
+                            if reach {
+                                Verdict::Unreachable
+                            } else {
+                                Verdict::Proved
+                            }
+                        }
+                        End::Depth => Verdict::Bounded,
+                        End::AllDecided | End::Limit(_) => Verdict::Unknown,
+                    };
+                    PropResult {
+                        name: spec.name.clone(),
+                        kind: spec.kind,
+                        verdict,
+                        depth: s.depth,
+                        counterexample: None,
+                        error: None,
+                        note: None,
+                    }
+                }
+            }
+        })
+        .collect();
+    Report { results, stats }
+}

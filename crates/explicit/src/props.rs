@@ -1,0 +1,116 @@
+//! The properties one run checks: the system's own (invariants, reachability, bounded response,
+//! observers) and the built-in ones every model has.
+
+use statecheck_ir::{ExprId, Program, PropertyKind};
+
+/// Names of the built-in properties, violated by run-time errors.
+pub const BUILTINS: [&str; 3] = ["no_range_overflow", "no_division_by_zero", "no_bad_shift"];
+
+/// What kind of property (as printed and in JSON).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum PropKind {
+    /// `invariant NAME: expr [assuming expr];`
+    Invariant,
+    /// `reachable NAME: expr;`
+    Reachable,
+    /// `respond NAME: trigger => response within N;`
+    Respond,
+    /// An observer chart's `error` state is never entered.
+    Observer,
+    /// A built-in property (no run-time error of a kind).
+    Builtin,
+}
+
+impl PropKind {
+    /// The JSON and table word.
+    pub fn as_str(self) -> &'static str {
+        match self {
+            PropKind::Invariant => "invariant",
+            PropKind::Reachable => "reachable",
+            PropKind::Respond => "respond",
+            PropKind::Observer => "observer",
+            PropKind::Builtin => "builtin",
+        }
+    }
+}
+
+/// How a property is decided on one transition.
+#[derive(Clone, Copy, Debug)]
+pub(crate) enum Check {
+    /// Violated when `assuming` holds and `expr` does not.
+    Invariant {
+        expr: ExprId,
+        assuming: Option<ExprId>,
+    },
+    /// Reached when `expr` holds.
+    Reachable { expr: ExprId },
+    /// Violated when `ok` does not hold (respond monitors, observers).
+    Ok { ok: ExprId },
+    /// Violated by a run-time error whose built-in property has this name.
+    Builtin(&'static str),
+}
+
+/// A property to check.
+#[derive(Clone, Debug)]
+pub struct Spec {
+    /// Its name.
+    pub name: String,
+    /// Its kind.
+    pub kind: PropKind,
+    pub(crate) check: Check,
+}
+
+/// Every property of a program: its own in declaration order, then the built-ins.
+pub fn all(program: &Program) -> Vec<Spec> {
+    let mut out: Vec<Spec> = program
+        .properties
+        .iter()
+        .map(|p| {
+            let (kind, check) = match &p.kind {
+                PropertyKind::Invariant { expr, assuming } => (
+                    PropKind::Invariant,
+                    Check::Invariant {
+                        expr: *expr,
+                        assuming: *assuming,
+                    },
+                ),
+                PropertyKind::Reachable { expr } => {
+                    (PropKind::Reachable, Check::Reachable { expr: *expr })
+                }
+                PropertyKind::Respond { ok, .. } => (PropKind::Respond, Check::Ok { ok: *ok }),
+                PropertyKind::Observer { ok, .. } => (PropKind::Observer, Check::Ok { ok: *ok }),
+            };
+            Spec {
+                name: p.name.clone(),
+                kind,
+                check,
+            }
+        })
+        .collect();
+    out.extend(BUILTINS.iter().map(|b| Spec {
+        name: (*b).to_string(),
+        kind: PropKind::Builtin,
+        check: Check::Builtin(b),
+    }));
+    out
+}
+
+/// The properties named in `names` (all of them when `names` is empty), in declaration order.
+/// Errs with a message naming the unknown property and the known ones.
+pub fn select(program: &Program, names: &[String]) -> Result<Vec<Spec>, String> {
+    let all = all(program);
+    if names.is_empty() {
+        return Ok(all);
+    }
+    if let Some(bad) = names.iter().find(|n| !all.iter().any(|s| &s.name == *n)) {
+        let known: Vec<&str> = all.iter().map(|s| s.name.as_str()).collect();
+        return Err(format!(
+            "no property named `{bad}`; the properties are: {}",
+            known.join(", ")
+        ));
+    }
+    Ok(all
+        .into_iter()
+        .filter(|s| names.contains(&s.name))
+        .collect())
+}

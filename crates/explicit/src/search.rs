@@ -1,0 +1,221 @@
+//! Level-synchronous breadth-first search.
+//!
+//! Each layer is processed in blocks of a fixed size: the block's states are expanded in
+//! parallel chunks (rayon), then every shard of the visited set inserts its successors in
+//! parallel, in generation order. Block, chunk and shard sizes depend only on the model, never
+//! on the thread count, so the states found, their order, and every result are the same on any
+//! number of threads.
+
+use crate::expand::{Cand, ChunkOut, Expander, Found};
+use crate::pack::Key;
+use crate::table::{Visited, SHARDS};
+use crate::{Limit, Progress};
+use rayon::prelude::*;
+use statecheck_ir::Machine;
+use std::time::{Duration, Instant};
+
+/// Limits of one search.
+#[derive(Clone, Copy, Debug, Default)]
+pub(crate) struct Limits {
+    pub depth: Option<u64>,
+    pub max_memory: Option<u64>,
+    pub max_states: Option<u64>,
+    pub timeout: Option<Duration>,
+}
+
+/// Why a search stopped.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub(crate) enum End {
+    /// No new states: everything reachable was explored.
+    Complete,
+    /// The depth bound (or the tracking depth) was reached with states left to expand.
+    Depth,
+    /// Every property was decided; the rest of the state space was not explored.
+    AllDecided,
+    /// A resource limit.
+    Limit(Limit),
+}
+
+/// A layer kept for counterexample reconstruction: states and (parent position, input index).
+pub(crate) type Layer<K> = (Vec<K>, Vec<(u32, u32)>);
+
+/// The outcome of one search.
+pub(crate) struct Searched<K> {
+    pub end: End,
+    pub states: u64,
+    pub transitions: u64,
+    /// The deepest layer reached (ticks from the initial state).
+    pub depth: u64,
+    /// Per property: the layer of the source state and the deciding transition.
+    pub found: Vec<Option<(u64, Found<K>)>>,
+    /// Coverage items hit at least once (when enabled).
+    pub covered: Option<Vec<bool>>,
+    /// Bytes of the visited set at the end.
+    pub table_bytes: u64,
+    /// Largest estimate of the memory held (visited set, layers, successor buffers).
+    pub peak_bytes: u64,
+    /// With tracking: every layer.
+    pub layers: Vec<Layer<K>>,
+    pub elapsed: Duration,
+}
+
+/// Run a search. With `track = Some(d)`, keep every layer with parent links and stop once
+/// layer `d` is built (for counterexample reconstruction).
+pub(crate) fn search<K: Key>(
+    exp: &Expander,
+    limits: Limits,
+    track: Option<u64>,
+    progress: Option<&(dyn Fn(&Progress) + Sync)>,
+) -> Searched<K> {
+    let start = Instant::now();
+    let n_props = exp.specs.len();
+    let mut pending = vec![true; n_props];
+    let mut found: Vec<Option<(u64, Found<K>)>> = (0..n_props).map(|_| None).collect();
+    let mut covered = exp.coverage.then(|| vec![false; exp.program.covers.len()]);
+    let mut words = vec![0u64; exp.packer.words];
+    let init: K = exp
+        .packer
+        .pack(Machine::new(exp.program).state(), &mut words);
+    let mut visited: Visited<K> = Visited::new();
+    visited.insert(&init);
+    let mut frontier: Vec<K> = vec![init];
+    let mut frontier_parents: Vec<(u32, u32)> = Vec::new();
+    let mut layers: Vec<Layer<K>> = Vec::new();
+    let mut layers_bytes = 0u64;
+    let mut states = 1u64;
+    let mut transitions = 0u64;
+    let mut depth = 0u64;
+    let mut peak = 0u64;
+    let branching = u64::try_from(exp.space.effective().unwrap_or(exp.space.count))
+        .unwrap_or(u64::MAX)
+        .max(1);
+    let chunk = (4096 / branching).clamp(1, 512) as usize;
+    let block = chunk * 256;
+    // Bytes per key outside a table: the key itself, plus the words of a boxed key.
+    let key_bytes = (std::mem::size_of::<K>()
+        + if std::mem::size_of::<K>() > 16 {
+            exp.packer.words * 8
+        } else {
+            0
+        }) as u64;
+    let tracking = track.is_some();
+    let end = 'outer: loop {
+        if limits.depth.is_some_and(|k| depth >= k) || track.is_some_and(|d| depth >= d) {
+            break End::Depth;
+        }
+        let mut next: Vec<K> = Vec::new();
+        let mut next_parents: Vec<(u32, u32)> = Vec::new();
+        for (b, blk) in frontier.chunks(block).enumerate() {
+            let base = b * block;
+            let pend = &pending;
+            let outs: Vec<ChunkOut<K>> = blk
+                .par_chunks(chunk)
+                .enumerate()
+                .map(|(c, ch)| exp.chunk(ch, base + c * chunk, pend))
+                .collect();
+            let mut per_shard: Vec<Vec<Vec<Cand<K>>>> = (0..SHARDS)
+                .map(|_| Vec::with_capacity(outs.len()))
+                .collect();
+            let mut cand_bytes = 0u64;
+            for out in outs {
+                transitions += out.transitions;
+                for f in out.found {
+                    if pending[f.prop] {
+                        pending[f.prop] = false;
+                        let i = f.prop;
+                        found[i] = Some((depth, f));
+                    }
+                }
+                if let (Some(cov), Some(counts)) = (covered.as_mut(), out.coverage) {
+                    cov.iter_mut().zip(counts).for_each(|(c, n)| *c |= n > 0);
+                }
+                for (s, bucket) in out.buckets.into_iter().enumerate() {
+                    cand_bytes += (bucket.capacity() * std::mem::size_of::<Cand<K>>()) as u64;
+                    per_shard[s].push(bucket);
+                }
+            }
+            let new: Vec<Vec<Cand<K>>> = visited
+                .shards
+                .par_iter_mut()
+                .zip(per_shard)
+                .map(|(shard, buckets)| {
+                    buckets
+                        .into_iter()
+                        .flatten()
+                        .filter(|c| shard.insert(&c.key, c.hash))
+                        .collect()
+                })
+                .collect();
+            for c in new.into_iter().flatten() {
+                next.push(c.key);
+                if tracking {
+                    next_parents.push((c.parent, c.input));
+                }
+            }
+            let table = visited.bytes() as u64;
+            let held = table
+                + layers_bytes
+                + (frontier.capacity() + next.capacity()) as u64 * key_bytes
+                + (frontier_parents.capacity() + next_parents.capacity()) as u64 * 8;
+            peak = peak.max(held + cand_bytes);
+            let total = states + next.len() as u64;
+            let elapsed = start.elapsed();
+            if let Some(f) = progress {
+                f(&Progress {
+                    depth,
+                    states: total,
+                    transitions,
+                    frontier: frontier.len() as u64,
+                    memory_bytes: held,
+                    elapsed,
+                });
+            }
+            let hit = if limits.max_memory.is_some_and(|m| held > m) {
+                limits.max_memory.map(Limit::Memory)
+            } else if limits.max_states.is_some_and(|m| total > m) {
+                limits.max_states.map(Limit::States)
+            } else if limits.timeout.is_some_and(|t| elapsed > t) {
+                limits.timeout.map(Limit::Time)
+            } else {
+                None
+            };
+            if let Some(l) = hit {
+                states = total;
+                break 'outer End::Limit(l);
+            }
+        }
+        states += next.len() as u64;
+        if next.is_empty() {
+            break End::Complete;
+        }
+        if !tracking && pending.iter().all(|p| !p) {
+            break End::AllDecided;
+        }
+        if tracking {
+            layers_bytes +=
+                frontier.capacity() as u64 * key_bytes + frontier_parents.capacity() as u64 * 8;
+            layers.push((
+                std::mem::take(&mut frontier),
+                std::mem::take(&mut frontier_parents),
+            ));
+        }
+        frontier = next;
+        frontier_parents = next_parents;
+        depth += 1;
+    };
+    if tracking {
+        layers.push((frontier, frontier_parents));
+    }
+    Searched {
+        end,
+        states,
+        transitions,
+        depth,
+        found,
+        covered,
+        table_bytes: visited.bytes() as u64,
+        peak_bytes: peak,
+        layers,
+        elapsed: start.elapsed(),
+    }
+}

@@ -1,0 +1,70 @@
+//! The engine on every key width (u64, u128, boxed words) and thread count, against counts
+//! derived by hand: `n` independent modulo-(m+1) counters, at most one incremented per tick,
+//! give (m+1)^n states after tick 0 plus the pre-start state; the wide padding variables never
+//! change, so they only widen the packed vector.
+
+use statecheck_explicit::{verify, Options, Verdict};
+
+fn program(n: usize, m: usize, pad: usize) -> statecheck_ir::Program {
+    let pads: String = (0..pad)
+        .map(|i| format!("  local pad{i}: int[0..1000000000000] = 7;\n"))
+        .collect();
+    let pairs: Vec<String> = (0..n)
+        .flat_map(|i| (i + 1..n).map(move |j| format!("!(k[{i}].inc && k[{j}].inc)")))
+        .collect();
+    let text = format!(
+        "chart Counter {{\n  input event inc;\n  output c: int[0..{m}] = 0;\n{pads}  initial Run;\n  state Run {{\n    on inc [c < {m}] / {{ c += 1; }};\n    on inc / {{ c = 0; }};\n  }}\n}}\nsystem S {{\n  instance k[{n}]: Counter;\n  assume {};\n  invariant not_all_max: !({});\n}}\n",
+        pairs.join(" && "),
+        (0..n).map(|i| format!("k[{i}].c == {m}")).collect::<Vec<_>>().join(" && ")
+    );
+    let (file, d1) = statecheck_syntax::parse(&text);
+    let (model, d2) = statecheck_model::check(&file);
+    assert!(
+        !d1.iter().chain(&d2).any(|d| d.is_error()),
+        "{text}\n{d1:?}{d2:?}"
+    );
+    let sys = model.system("S").expect("system S");
+    statecheck_ir::lower(&model, sys).expect("lowers")
+}
+
+#[test]
+fn counts_and_shortest_cex_on_every_key_width() {
+    for pad in [0, 1, 3] {
+        let p = program(3, 3, pad);
+        let mut seen = Vec::new();
+        for threads in [1, 2] {
+            let r = verify(
+                &p,
+                &Options {
+                    threads,
+                    ..Options::default()
+                },
+                None,
+            )
+            .expect("runs");
+            assert_eq!(
+                r.stats.states,
+                4 * 4 * 4 + 1,
+                "pad {pad}, {} bits",
+                r.stats.state_bits
+            );
+            // Each state: no event, or one of 3 events.
+            assert_eq!(r.stats.transitions, r.stats.states * 4);
+            let inv = &r.results[0];
+            assert_eq!(inv.verdict, Verdict::Violated);
+            // All three counters at 3 need 9 increments, one per tick from tick 1: tick 9.
+            assert_eq!(inv.depth, 10);
+            assert_eq!(inv.counterexample.as_ref().map(Vec::len), Some(10));
+            seen.push((
+                r.stats.states,
+                r.stats.transitions,
+                r.stats.depth,
+                inv.counterexample.clone(),
+            ));
+        }
+        assert_eq!(
+            seen[0], seen[1],
+            "same answer and counterexample on 1 and 2 threads"
+        );
+    }
+}

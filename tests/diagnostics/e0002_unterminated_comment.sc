@@ -1,0 +1,5 @@
+chart C {
+  initial A;
+  state A;
+  /* this comment never ends
+}

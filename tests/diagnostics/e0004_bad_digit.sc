@@ -1,0 +1,5 @@
+const MASK = 0b1021;
+chart C {
+  initial A;
+  state A;
+}

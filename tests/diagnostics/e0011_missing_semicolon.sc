@@ -1,0 +1,5 @@
+chart C {
+  local x: int[0..9] = 0
+  initial A;
+  state A;
+}

@@ -1,0 +1,4 @@
+chart C {
+  initial A;
+  state A {
+    entry { }

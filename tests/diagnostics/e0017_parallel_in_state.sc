@@ -1,0 +1,8 @@
+chart C {
+  initial A;
+  state A {
+    parallel {
+      region r { initial X; state X; }
+    }
+  }
+}

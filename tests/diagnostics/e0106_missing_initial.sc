@@ -1,0 +1,7 @@
+chart C {
+  state A {
+    state A1;
+    state A2;
+  }
+  state B;
+}

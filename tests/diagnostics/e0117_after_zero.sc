@@ -1,0 +1,6 @@
+chart C {
+  initial A;
+  state A {
+    on after(0) -> A;
+  }
+}

@@ -1,0 +1,7 @@
+tick 100 ms;
+chart C {
+  initial A;
+  state A {
+    on after(250 ms) -> A;
+  }
+}
