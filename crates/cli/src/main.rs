@@ -5,9 +5,12 @@
 //! (0 ok, 1 model or run-time error, 2 usage error, 4 a property was violated in a run).
 
 mod diag;
+mod export_cmd;
+mod gen_cmd;
 mod load;
 mod output;
 mod sim_cmd;
+mod synth_cmd;
 mod verify_cmd;
 
 use anyhow::Result;
@@ -41,6 +44,13 @@ enum Command {
     Sim(sim_cmd::SimArgs),
     /// Verify a system's properties exhaustively.
     Verify(verify_cmd::VerifyArgs),
+    /// Generate code (C99, Rust, Modelica) from a system.
+    Gen(gen_cmd::GenArgs),
+    /// Export a system to another tool's input format.
+    #[command(subcommand)]
+    Export(export_cmd::ExportCommand),
+    /// Synthesize a maximally permissive, controllable, nonblocking supervisor.
+    Synth(synth_cmd::SynthArgs),
     /// Draw a system's charts as Graphviz DOT, optionally with coverage counts.
     Dot {
         /// The `.sc` model file.
@@ -110,6 +120,9 @@ fn run(cli: Cli) -> Result<u8> {
         }
         Command::Sim(args) => sim_cmd::run(args),
         Command::Verify(args) => verify_cmd::run(args),
+        Command::Gen(args) => gen_cmd::run(args),
+        Command::Export(c) => export_cmd::run(c),
+        Command::Synth(args) => synth_cmd::run(args),
         Command::Dot {
             model,
             system,
