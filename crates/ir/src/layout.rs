@@ -25,6 +25,25 @@ pub(crate) struct Layout {
     pub started: SlotId,
     /// Per property: its monitor slot (respond properties only).
     pub monitors: Vec<Option<SlotId>>,
+    /// Per instance, per OR node that remembers its child (history): has it ever been entered?
+    pub visited: Vec<Vec<Option<SlotId>>>,
+}
+
+/// True when an OR node's active child must survive its exit (history on it, or deep history
+/// above it).
+pub(crate) fn remembers(chart: &statecheck_model::Chart, n: statecheck_model::StateId) -> bool {
+    use statecheck_syntax::ast::HistoryKind;
+    if let NodeKind::Or { history: Some(_), .. } = chart.states[n as usize].kind {
+        return true;
+    }
+    let mut cur = chart.states[n as usize].parent;
+    while let Some(p) = cur {
+        if let NodeKind::Or { history: Some(HistoryKind::Deep), .. } = chart.states[p as usize].kind {
+            return matches!(chart.states[n as usize].kind, NodeKind::Or { .. });
+        }
+        cur = chart.states[p as usize].parent;
+    }
+    false
 }
 
 /// A slot whose final index is known only once all slots are counted.
@@ -66,6 +85,7 @@ pub(crate) fn layout(model: &Model, sys: &System) -> Layout {
     let mut region_prov: Vec<Vec<Option<Prov>>> = Vec::with_capacity(n);
     let mut timer_prov: Vec<Vec<Option<(Prov, i64)>>> = Vec::with_capacity(n);
     let mut pending_prov: Vec<Vec<Option<Prov>>> = Vec::with_capacity(n);
+    let mut visited_prov: Vec<Vec<Option<Prov>>> = Vec::with_capacity(n);
     let mut abort_prov: Vec<Vec<Option<Prov>>> = Vec::with_capacity(n);
 
     // 1. Persistent state: variables, active children, timers, pending events.
@@ -114,6 +134,7 @@ pub(crate) fn layout(model: &Model, sys: &System) -> Layout {
         }
         let mut regions = vec![None; chart.states.len()];
         let mut timers = vec![None; chart.states.len()];
+        let mut visited = vec![None; chart.states.len()];
         for (s, node) in chart.states.iter().enumerate() {
             if let NodeKind::Or {
                 children, initial, ..
@@ -145,6 +166,22 @@ pub(crate) fn layout(model: &Model, sys: &System) -> Layout {
                         },
                     ),
                 );
+                if remembers(chart, s as u32) {
+                    visited[s] = Some(a.push(
+                        0,
+                        Slot {
+                            name: format!("{}{label}$visited", inst.name),
+                            role: SlotRole::Visited {
+                                instance: i as u32,
+                                node: s as u32,
+                            },
+                            lo: 0,
+                            hi: 1,
+                            init: 0,
+                            display: ValueKind::Bool,
+                        },
+                    ));
+                }
             }
             let max_after = node
                 .transitions
@@ -176,6 +213,7 @@ pub(crate) fn layout(model: &Model, sys: &System) -> Layout {
         region_prov.push(regions);
         timer_prov.push(timers);
         pending_prov.push(pend);
+        visited_prov.push(visited);
     }
     let started = a.push(
         0,
@@ -342,6 +380,7 @@ pub(crate) fn layout(model: &Model, sys: &System) -> Layout {
             .collect(),
         started: fin(started),
         monitors: monitors_prov.into_iter().map(|p| p.map(fin)).collect(),
+        visited: visited_prov.into_iter().map(|v| v.into_iter().map(|p| p.map(fin)).collect()).collect(),
         slots,
     }
 }

@@ -26,6 +26,7 @@
 //!   amount is a run-time error: the tick stops there.
 
 use crate::layout::{layout, Layout};
+
 use crate::program::*;
 use statecheck_base::{Diagnostic, Span};
 use statecheck_model as m;
@@ -627,7 +628,7 @@ impl<'m> Lowerer<'m> {
             .map(|c| vec![Stmt::Call(self.exit_proc(i, *c))])
             .collect();
         let mut out = vec![Stmt::Switch { slot, cases }];
-        if !self.remembers(chart, n) {
+        if !crate::layout::remembers(chart, n) {
             let v = self.konst(initial as i64);
             out.push(Stmt::Assign {
                 slot,
@@ -636,29 +637,6 @@ impl<'m> Lowerer<'m> {
             });
         }
         out
-    }
-
-    /// True when an OR node's active child must survive its exit (history on it, or deep
-    /// history above it).
-    fn remembers(&self, chart: &Chart, n: StateId) -> bool {
-        if let NodeKind::Or {
-            history: Some(_), ..
-        } = chart.states[n as usize].kind
-        {
-            return true;
-        }
-        let mut cur = chart.states[n as usize].parent;
-        while let Some(p) = cur {
-            if let NodeKind::Or {
-                history: Some(HistoryKind::Deep),
-                ..
-            } = chart.states[p as usize].kind
-            {
-                return true;
-            }
-            cur = chart.states[p as usize].parent;
-        }
-        false
     }
 
     /// Enter the states of `chain` (outermost first), then the last one's default entry.
@@ -678,6 +656,7 @@ impl<'m> Lowerer<'m> {
                     expr: v,
                     site: None,
                 });
+                out.extend(self.mark_visited(i, p));
             }
         }
         out.extend(self.entry_of(i, x));
@@ -699,6 +678,17 @@ impl<'m> Lowerer<'m> {
             _ => out.extend(self.enter_chain(i, rest)),
         }
         out
+    }
+
+    /// Record that a remembering OR node has been entered (no-op for other nodes).
+    fn mark_visited(&mut self, i: u32, n: StateId) -> Vec<Stmt> {
+        match self.lay.visited[i as usize][n as usize] {
+            Some(vis) => {
+                let one = self.konst(1);
+                vec![Stmt::Assign { slot: vis, expr: one, site: None }]
+            }
+            None => Vec::new(),
+        }
     }
 
     /// Coverage count and entry action of a state (nothing for regions and the root's cover).
@@ -746,26 +736,46 @@ impl<'m> Lowerer<'m> {
                 history,
             } => {
                 let slot = self.region_slot(i, s);
-                if deep || history.is_some() {
-                    let child_deep = deep || history == Some(HistoryKind::Deep);
-                    let cases = children
-                        .iter()
-                        .map(|c| vec![Stmt::Call(self.enter_default(i, *c, child_deep))])
-                        .collect();
-                    vec![Stmt::Switch { slot, cases }]
-                } else {
-                    let mut out = self.stmts(
-                        &chart.states[s as usize].initial_action,
-                        Ctx { inst: i, state: s },
-                    );
-                    let v = self.konst(initial as i64);
-                    out.push(Stmt::Assign {
-                        slot,
-                        expr: v,
-                        site: None,
-                    });
-                    out.push(Stmt::Call(self.enter_default(i, children[initial], false)));
-                    out
+                // The default path: the initial action, then the initial child.
+                let mut default = self.stmts(
+                    &chart.states[s as usize].initial_action,
+                    Ctx { inst: i, state: s },
+                );
+                let v = self.konst(initial as i64);
+                default.push(Stmt::Assign {
+                    slot,
+                    expr: v,
+                    site: None,
+                });
+                default.push(Stmt::Call(self.enter_default(i, children[initial], false)));
+                let visited = self.lay.visited[i as usize][s as usize];
+                match (deep || history.is_some(), visited) {
+                    (true, Some(vis)) => {
+                        // R8: resume the remembered child once the node has been entered before.
+                        let child_deep = deep || history == Some(HistoryKind::Deep);
+                        let cases = children
+                            .iter()
+                            .map(|c| vec![Stmt::Call(self.enter_default(i, *c, child_deep))])
+                            .collect();
+                        let ve = self.slot(vis);
+                        let one = self.konst(1);
+                        vec![
+                            Stmt::If {
+                                cond: ve,
+                                then: vec![Stmt::Switch { slot, cases }],
+                                otherwise: default,
+                            },
+                            Stmt::Assign {
+                                slot: vis,
+                                expr: one,
+                                site: None,
+                            },
+                        ]
+                    }
+                    _ => {
+                        default.extend(self.mark_visited(i, s));
+                        default
+                    }
                 }
             }
         }
@@ -882,9 +892,9 @@ impl<'m> Lowerer<'m> {
                 let l = *self.locals.entry(*id).or_insert(n);
                 self.node(Node::Local(l))
             }
-            m::ExprKind::Check(a, lo, hi) => {
+            m::ExprKind::Check(a, lo, hi, what) => {
                 let a = self.expr(a, ctx);
-                let site = self.site(ctx, e.span, format!("value in range {lo}..{hi}"));
+                let site = self.site(ctx, e.span, what.clone());
                 self.node(Node::Check(a, *lo, *hi, site))
             }
         }

@@ -45,6 +45,13 @@ pub enum SlotRole {
         /// The OR node.
         node: StateId,
     },
+    /// Whether an OR node with history has ever been entered (history resumes only then).
+    Visited {
+        /// Instance index.
+        instance: u32,
+        /// The OR node.
+        node: StateId,
+    },
     /// Ticks since the state was entered, saturating at its largest `after` delay.
     Timer {
         /// Instance index.
@@ -162,7 +169,7 @@ fn parse_int(text: &str) -> Option<i64> {
 impl Slot {
     /// Bits needed to store `value - lo` for every value in range.
     pub fn width(&self) -> u32 {
-        let span = (self.hi - self.lo) as u64;
+        let span = self.hi.wrapping_sub(self.lo) as u64;
         64 - span.leading_zeros()
     }
 }

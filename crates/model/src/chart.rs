@@ -873,7 +873,7 @@ fn check_stmt(ck: &mut ExprChecker, scope: &Scope, s: &ast::Stmt) -> Option<Stmt
             let checked = matches!(value.kind, crate::model::ExprKind::Check(..));
             let value = match value.kind {
                 // The assignment itself performs the range check, so unwrap it here.
-                crate::model::ExprKind::Check(inner, _, _) => *inner,
+                crate::model::ExprKind::Check(inner, ..) => *inner,
                 _ => value,
             };
             let _ = (

@@ -568,7 +568,7 @@ impl<'g> ExprChecker<'g> {
             if lo < tl || hi > th {
                 let span = x.span;
                 return Expr {
-                    kind: ExprKind::Check(Box::new(x), tl, th),
+                    kind: ExprKind::Check(Box::new(x), tl, th, what.to_string()),
                     ty: Type::Int {
                         lo: lo.max(tl),
                         hi: hi.min(th),

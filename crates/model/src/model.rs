@@ -289,7 +289,7 @@ pub enum ExprKind {
     Builtin(Builtin, Vec<Expr>),
     /// A value that must lie in `lo..=hi` (function parameters and results); a run-time
     /// error otherwise.
-    Check(Box<Expr>, i64, i64),
+    Check(Box<Expr>, i64, i64, String),
     /// `let local = value in body`: an inlined function's argument (or `let`), evaluated once.
     Let(u32, Box<Expr>, Box<Expr>),
     /// The value bound by the enclosing [`ExprKind::Let`] with this id.

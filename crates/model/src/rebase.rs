@@ -16,7 +16,7 @@ pub(crate) fn expr(e: &mut Expr, inst: u32) {
         ExprKind::In(s) => {
             s.instance.get_or_insert(inst);
         }
-        ExprKind::Unary(_, a) | ExprKind::Check(a, _, _) => expr(a, inst),
+        ExprKind::Unary(_, a) | ExprKind::Check(a, ..) => expr(a, inst),
         ExprKind::Binary(_, a, b) => {
             expr(a, inst);
             expr(b, inst);

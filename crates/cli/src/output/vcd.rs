@@ -20,7 +20,7 @@ fn ident(mut n: usize) -> String {
 fn vcd_name(s: &str) -> String {
     s.chars()
         .map(|c| {
-            if c.is_ascii_alphanumeric() || c == '_' || c == '.' {
+            if c.is_ascii_alphanumeric() || c == '_' {
                 c
             } else {
                 '_'
@@ -76,11 +76,28 @@ pub fn render(p: &Program, views: &Views, trace: &[TickRecord], tick_ms: i64) ->
             );
             sigs.push((id, Sig::Event(*slot)));
         }
+        // States as a scope tree mirroring the hierarchy: `states.Go.GoLeft` is the wire
+        // `GoLeft` in scope `Go` in scope `states` (the wire `Go` sits beside scope `Go`).
         let _ = writeln!(out, "$scope module states $end");
+        let mut open: Vec<String> = Vec::new();
         for (path, e, _) in &views.states[i] {
+            let parts: Vec<&str> = path.split('.').collect();
+            let (parent, leaf) = parts.split_at(parts.len() - 1);
+            let common = open.iter().zip(parent).take_while(|(a, b)| a.as_str() == **b).count();
+            while open.len() > common {
+                open.pop();
+                let _ = writeln!(out, "$upscope $end");
+            }
+            for p in &parent[common..] {
+                let _ = writeln!(out, "$scope module {} $end", vcd_name(p));
+                open.push((*p).to_string());
+            }
             let id = ident(sigs.len());
-            let _ = writeln!(out, "$var wire 1 {id} {} $end", vcd_name(path));
+            let _ = writeln!(out, "$var wire 1 {id} {} $end", vcd_name(leaf[0]));
             sigs.push((id, Sig::State(*e)));
+        }
+        for _ in open {
+            let _ = writeln!(out, "$upscope $end");
         }
         let _ = writeln!(out, "$upscope $end\n$upscope $end");
     }

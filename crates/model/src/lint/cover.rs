@@ -200,7 +200,7 @@ fn collect(e: &Expr, atoms: &mut Vec<Atom>, consts: &mut Vec<i64>) {
         ExprKind::Var(r) => add(Atom::Var(*r)),
         ExprKind::In(s) => add(Atom::In(*s)),
         ExprKind::Unary(_, a) => collect(a, atoms, consts),
-        ExprKind::Check(a, lo, hi) => {
+        ExprKind::Check(a, lo, hi, _) => {
             consts.extend([*lo, *hi]);
             collect(a, atoms, consts);
         }
@@ -257,7 +257,7 @@ impl Eval<'_> {
                     _ => None,
                 }
             }
-            ExprKind::Check(a, lo, hi) => self.eval(a).filter(|v| (*lo..=*hi).contains(v)),
+            ExprKind::Check(a, lo, hi, _) => self.eval(a).filter(|v| (*lo..=*hi).contains(v)),
             // Substitute the bound value: a local is its value, evaluated again here.
             ExprKind::Let(id, v, b) => self.eval(&substitute(b, *id, v)),
             ExprKind::Local(_) => None,
@@ -295,7 +295,7 @@ fn replace(e: &mut Expr, id: u32, value: &Expr) {
     match &mut e.kind {
         ExprKind::Local(l) if *l == id => *e = value.clone(),
         ExprKind::Const(_) | ExprKind::Var(_) | ExprKind::In(_) | ExprKind::Local(_) => {}
-        ExprKind::Unary(_, a) | ExprKind::Check(a, _, _) => replace(a, id, value),
+        ExprKind::Unary(_, a) | ExprKind::Check(a, ..) => replace(a, id, value),
         ExprKind::Binary(_, a, b) | ExprKind::Let(_, a, b) => {
             replace(a, id, value);
             replace(b, id, value);

@@ -50,7 +50,7 @@ impl Usage {
                 self.expr(cx, site, b, except);
             }
             ExprKind::Var(r) => self.read_ref(cx, site, *r, except),
-            ExprKind::Unary(_, a) | ExprKind::Check(a, _, _) => self.expr(cx, site, a, except),
+            ExprKind::Unary(_, a) | ExprKind::Check(a, ..) => self.expr(cx, site, a, except),
             ExprKind::Binary(_, a, b) => {
                 self.expr(cx, site, a, except);
                 self.expr(cx, site, b, except);
