@@ -352,6 +352,9 @@ impl<'g> ExprChecker<'g> {
         span: Span,
     ) -> Expr {
         let checked: Vec<Expr> = args.iter().map(|a| self.check(scope, a)).collect();
+        if let Some(x) = self.conversion(func, &checked, span) {
+            return x;
+        }
         let builtin = match func.name.as_str() {
             "min" => Some((Builtin::Min, 2)),
             "max" => Some((Builtin::Max, 2)),
@@ -512,6 +515,60 @@ impl<'g> ExprChecker<'g> {
         }
         r.span = span;
         r
+    }
+
+    /// `int(x)` (an enum's index or a bool as 0/1) and `Enum(n)` (the literal with index `n`,
+    /// checked at run time); `None` when `func` names neither.
+    fn conversion(&mut self, func: &ast::Ident, args: &[Expr], span: Span) -> Option<Expr> {
+        let target = if func.name == "int" {
+            None
+        } else {
+            Some(*self.globals.enum_ids.get(&func.name)?)
+        };
+        if args.len() != 1 {
+            self.sink.push(
+                Diagnostic::error("E0112", format!("`{}(...)` converts one value, found {} arguments", func.name, args.len()), span)
+                    .with_label("wrong number of arguments"),
+            );
+            return Some(error_expr(span));
+        }
+        let arg = args[0].clone();
+        match target {
+            None => {
+                if arg.ty.is_int() {
+                    return Some(Expr { span, ..arg });
+                }
+                let (lo, hi) = self.bounds(arg.ty);
+                Some(Expr { kind: arg.kind, ty: Type::Int { lo, hi }, span })
+            }
+            Some(e) => {
+                if !arg.ty.is_int() {
+                    let tn = type_name(self.globals, arg.ty);
+                    self.sink.push(
+                        Diagnostic::error("E0103", format!("`{}(...)` converts an integer, found `{tn}`", func.name), arg.span)
+                            .with_label(format!("this is a `{tn}`")),
+                    );
+                    return Some(error_expr(span));
+                }
+                let n = self.globals.enums[e as usize].variants.len() as i64;
+                let what = format!("conversion to `{}` (0..{})", func.name, n - 1);
+                let (lo, hi) = self.bounds(arg.ty);
+                let kind = if let ExprKind::Const(v) = arg.kind {
+                    if !(0..n).contains(&v) {
+                        self.sink.push(
+                            Diagnostic::error("E0104", format!("{v} is not a literal index of `{}` (0..{})", func.name, n - 1), arg.span)
+                                .with_label("out of range"),
+                        );
+                    }
+                    ExprKind::Const(v.clamp(0, n - 1))
+                } else if lo >= 0 && hi < n {
+                    arg.kind
+                } else {
+                    ExprKind::Check(Box::new(arg), 0, n - 1, what)
+                };
+                Some(Expr { kind, ty: Type::Enum(e), span })
+            }
+        }
     }
 
     /// The expression to substitute for a parameter: `x` itself when it is cheap to repeat,

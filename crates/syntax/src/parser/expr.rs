@@ -223,7 +223,8 @@ impl Parser<'_> {
                 (e, h)
             }
             Tok::Kw(Kw::In) => self.in_expr(),
-            Tok::Ident if self.nth(1).kind == Tok::LParen => self.call(),
+            // `int(x)` converts an enum or a bool to its integer value.
+            Tok::Ident | Tok::Kw(Kw::Int) if self.nth(1).kind == Tok::LParen => self.call(),
             Tok::Ident => match self.path_h() {
                 Ok((p, h)) => (Expr::Path(p), h),
                 Err(_) => (Expr::Error(self.span_from(t.span)), 0),
