@@ -339,72 +339,41 @@ impl Compiler<'_> {
         }
     }
 
-    /// Emit code that jumps (through `fails`, patched later) when `e` is false and falls
-    /// through when it is true: booleans compile to control flow, not to 0/1 values.
-    fn jump_if_false(&mut self, e: ExprId, fails: &mut Vec<usize>) {
+    /// Emit code that jumps (through `targets`, patched later) when `e` evaluates to `sense`
+    /// and falls through otherwise: booleans compile to control flow, not to 0/1 values.
+    fn jump_when(&mut self, e: ExprId, sense: bool, targets: &mut Vec<usize>) {
         match self.p.nodes[e as usize] {
-            Node::Binary(BinOp::And, a, b, _) => {
-                self.jump_if_false(a, fails);
-                self.jump_if_false(b, fails);
+            // `a && b` is false as soon as one operand is, `a || b` true as soon as one is:
+            // both operands jump to the same place.
+            Node::Binary(BinOp::And, a, b, _) if !sense => {
+                self.jump_when(a, false, targets);
+                self.jump_when(b, false, targets);
             }
-            Node::Binary(BinOp::Or, a, b, _) => {
-                let mut trues = Vec::new();
-                self.jump_if_true(a, &mut trues);
-                self.jump_if_false(b, fails);
+            Node::Binary(BinOp::Or, a, b, _) if sense => {
+                self.jump_when(a, true, targets);
+                self.jump_when(b, true, targets);
+            }
+            // Otherwise the first operand can only decide the opposite outcome, by skipping the
+            // second one.
+            Node::Binary(op @ (BinOp::And | BinOp::Or), a, b, _) => {
+                let mut skip = Vec::new();
+                self.jump_when(a, op == BinOp::Or, &mut skip);
+                self.jump_when(b, sense, targets);
                 let here = self.here();
-                self.patch_all(trues, here);
+                self.patch_all(skip, here);
             }
-            Node::Unary(UnOp::Not, a) => self.jump_if_true(a, fails),
+            Node::Unary(UnOp::Not, a) => self.jump_when(a, !sense, targets),
             Node::Const(v) => {
-                if v == 0 {
-                    fails.push(self.ops.len());
-                    self.ops.push(Op::Jmp { target: 0 });
-                }
-            }
-            Node::Binary(op, a, b, _) if Cmp::of(op).is_some() => {
-                let cmp = Cmp::of(op).map_or(Cmp::Eq, Cmp::negate);
-                let (ra, rb) = (self.expr(a), self.expr(b));
-                fails.push(self.ops.len());
-                self.ops.push(Op::JCmp {
-                    cmp,
-                    a: ra,
-                    b: rb,
-                    target: 0,
-                });
-            }
-            _ => {
-                let r = self.expr(e);
-                fails.push(self.ops.len());
-                self.ops.push(Op::Jz { reg: r, target: 0 });
-            }
-        }
-    }
-
-    /// Emit code that jumps (through `trues`) when `e` is true and falls through when false.
-    fn jump_if_true(&mut self, e: ExprId, trues: &mut Vec<usize>) {
-        match self.p.nodes[e as usize] {
-            Node::Binary(BinOp::Or, a, b, _) => {
-                self.jump_if_true(a, trues);
-                self.jump_if_true(b, trues);
-            }
-            Node::Binary(BinOp::And, a, b, _) => {
-                let mut fails = Vec::new();
-                self.jump_if_false(a, &mut fails);
-                self.jump_if_true(b, trues);
-                let here = self.here();
-                self.patch_all(fails, here);
-            }
-            Node::Unary(UnOp::Not, a) => self.jump_if_false(a, trues),
-            Node::Const(v) => {
-                if v != 0 {
-                    trues.push(self.ops.len());
+                if (v != 0) == sense {
+                    targets.push(self.ops.len());
                     self.ops.push(Op::Jmp { target: 0 });
                 }
             }
             Node::Binary(op, a, b, _) if Cmp::of(op).is_some() => {
                 let cmp = Cmp::of(op).unwrap_or(Cmp::Eq);
+                let cmp = if sense { cmp } else { cmp.negate() };
                 let (ra, rb) = (self.expr(a), self.expr(b));
-                trues.push(self.ops.len());
+                targets.push(self.ops.len());
                 self.ops.push(Op::JCmp {
                     cmp,
                     a: ra,
@@ -413,9 +382,13 @@ impl Compiler<'_> {
                 });
             }
             _ => {
-                let r = self.expr(e);
-                trues.push(self.ops.len());
-                self.ops.push(Op::Jnz { reg: r, target: 0 });
+                let reg = self.expr(e);
+                targets.push(self.ops.len());
+                self.ops.push(if sense {
+                    Op::Jnz { reg, target: 0 }
+                } else {
+                    Op::Jz { reg, target: 0 }
+                });
             }
         }
     }
@@ -454,7 +427,7 @@ impl Compiler<'_> {
                     otherwise,
                 } => {
                     let mut fails = Vec::new();
-                    self.jump_if_false(*cond, &mut fails);
+                    self.jump_when(*cond, false, &mut fails);
                     self.block(then);
                     if otherwise.is_empty() {
                         let end = self.here();
@@ -548,7 +521,7 @@ impl Compiler<'_> {
                 let one = self.konst(1);
                 self.ops.push(Op::Mov { dst, src: zero });
                 let mut fails = Vec::new();
-                self.jump_if_false(e, &mut fails);
+                self.jump_when(e, false, &mut fails);
                 self.ops.push(Op::Mov { dst, src: one });
                 let end = self.here();
                 self.patch_all(fails, end);
@@ -621,7 +594,7 @@ impl Compiler<'_> {
                 let rb = self.expr(b);
                 self.ops.push(Op::Mov { dst, src: rb });
                 let mut fails = Vec::new();
-                self.jump_if_false(c, &mut fails);
+                self.jump_when(c, false, &mut fails);
                 let ra = self.expr(a);
                 self.ops.push(Op::Mov { dst, src: ra });
                 let end = self.here();
@@ -631,7 +604,7 @@ impl Compiler<'_> {
             Node::Ite(c, a, b) => {
                 let dst = self.temp();
                 let mut fails = Vec::new();
-                self.jump_if_false(c, &mut fails);
+                self.jump_when(c, false, &mut fails);
                 let ra = self.expr(a);
                 self.ops.push(Op::Mov { dst, src: ra });
                 let jmp = self.ops.len();
