@@ -1,7 +1,10 @@
 //! `statecheck gen`: code generation (C99, Rust, Modelica) from the IR.
 
-use anyhow::{bail, Result};
+use crate::load;
+use anyhow::{bail, Context, Result};
 use clap::Args;
+use statecheck_codegen::{Observables, Source};
+use std::path::Path;
 
 /// Arguments of `statecheck gen`.
 #[derive(Args)]
@@ -10,10 +13,66 @@ pub struct GenArgs {
     target: String,
     /// The `.sc` model file.
     model: String,
+    /// The system (or chart) to generate.
+    #[arg(long)]
+    system: Option<String>,
+    /// Output directory (c, rust) or file (modelica; standard output when absent).
+    #[arg(short, long)]
+    output: Option<String>,
+    /// C only: also emit `PREFIX_harness.c`, a `main` replaying a scenario file and printing
+    /// the trace as `statecheck sim --json` does.
+    #[arg(long)]
+    harness: bool,
 }
 
 /// Run the command; returns the exit code.
 pub fn run(a: GenArgs) -> Result<u8> {
-    let _ = (a.target, a.model);
-    bail!("not implemented yet")
+    let loaded = load::load(&a.model, false)?;
+    let sys = loaded.system(a.system.as_deref())?;
+    let program = loaded.lower(sys)?;
+    let src = Source::new(&loaded.path, &loaded.source);
+    let prefix = statecheck_codegen::common::ident(&program.name).to_lowercase();
+    match a.target.as_str() {
+        "c" => {
+            let dir = out_dir(a.output.as_deref())?;
+            let names = statecheck_codegen::observe::value_names(&loaded.model, &program);
+            let files = statecheck_codegen::c::generate_named(&program, &src, &prefix, Some(names));
+            write(&dir.join(format!("{}.h", files.prefix)), &files.header)?;
+            write(&dir.join(format!("{}.c", files.prefix)), &files.source)?;
+            if a.harness {
+                let obs = Observables::new(&loaded.model, &program);
+                let h = statecheck_codegen::c_harness(&program, &src, &obs, &prefix);
+                write(&dir.join(format!("{}_harness.c", files.prefix)), &h)?;
+            }
+            eprintln!(
+                "wrote {}/{}.h and {}.c{}",
+                dir.display(),
+                files.prefix,
+                files.prefix,
+                if a.harness { " and the harness" } else { "" }
+            );
+            Ok(0)
+        }
+        "rust" => {
+            let dir = out_dir(a.output.as_deref())?;
+            let path = dir.join(format!("{prefix}.rs"));
+            write(&path, &statecheck_codegen::rust::generate(&program, &src))?;
+            eprintln!("wrote {}", path.display());
+            Ok(0)
+        }
+        other => bail!("unknown target `{other}` (expected c, rust or modelica)"),
+    }
+}
+
+fn out_dir(o: Option<&str>) -> Result<&Path> {
+    let Some(d) = o else {
+        bail!("give an output directory with -o DIR")
+    };
+    let p = Path::new(d);
+    std::fs::create_dir_all(p).with_context(|| format!("cannot create `{d}`"))?;
+    Ok(p)
+}
+
+fn write(path: &Path, text: &str) -> Result<()> {
+    std::fs::write(path, text).with_context(|| format!("cannot write `{}`", path.display()))
 }

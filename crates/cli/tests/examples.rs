@@ -20,7 +20,8 @@ fn repo_root() -> PathBuf {
 }
 
 fn directive<'a>(text: &'a str, key: &str) -> Option<&'a str> {
-    text.lines().find_map(|l| l.strip_prefix(&format!("# {key}:")).map(str::trim))
+    text.lines()
+        .find_map(|l| l.strip_prefix(&format!("# {key}:")).map(str::trim))
 }
 
 fn render(v: &Value) -> String {
@@ -31,21 +32,37 @@ fn render(v: &Value) -> String {
 }
 
 fn check_expectation(trace: &[Value], tick: usize, item: &str) -> Result<(), String> {
-    let t = trace.get(tick).ok_or_else(|| format!("the trace has no tick {tick} (it has {})", trace.len()))?;
+    let t = trace
+        .get(tick)
+        .ok_or_else(|| format!("the trace has no tick {tick} (it has {})", trace.len()))?;
     if let Some(rest) = item.strip_prefix("active ") {
-        let (inst, path) = rest.split_once(' ').ok_or_else(|| format!("bad item `{item}`"))?;
-        let active = t["active"][inst].as_array().ok_or_else(|| format!("no instance `{inst}`"))?;
+        let (inst, path) = rest
+            .split_once(' ')
+            .ok_or_else(|| format!("bad item `{item}`"))?;
+        let active = t["active"][inst]
+            .as_array()
+            .ok_or_else(|| format!("no instance `{inst}`"))?;
         if active.iter().any(|a| a.as_str() == Some(path.trim())) {
             return Ok(());
         }
-        return Err(format!("tick {tick}: `{path}` not active in `{inst}`; active: {active:?}"));
+        return Err(format!(
+            "tick {tick}: `{path}` not active in `{inst}`; active: {active:?}"
+        ));
     }
-    let (key, want) = item.split_once('=').ok_or_else(|| format!("bad item `{item}`"))?;
-    let got = t["vars"].get(key.trim()).ok_or_else(|| format!("tick {tick}: no variable `{key}`"))?;
+    let (key, want) = item
+        .split_once('=')
+        .ok_or_else(|| format!("bad item `{item}`"))?;
+    let got = t["vars"]
+        .get(key.trim())
+        .ok_or_else(|| format!("tick {tick}: no variable `{key}`"))?;
     if render(got) == want.trim() {
         Ok(())
     } else {
-        Err(format!("tick {tick}: {key} = {}, expected {}", render(got), want.trim()))
+        Err(format!(
+            "tick {tick}: {key} = {}, expected {}",
+            render(got),
+            want.trim()
+        ))
     }
 }
 
@@ -88,12 +105,21 @@ fn example_scenarios_meet_their_expectations() {
                         .filter_map(|e| e.ok().map(|e| e.path()))
                         .filter(|p| p.extension().is_some_and(|e| e == "sc"))
                         .collect();
-                    assert_eq!(models.len(), 1, "{}: name the model with `# model:`", scn.display());
+                    assert_eq!(
+                        models.len(),
+                        1,
+                        "{}: name the model with `# model:`",
+                        scn.display()
+                    );
                     models[0].clone()
                 }
             };
             let mut cmd = Command::new(env!("CARGO_BIN_EXE_statecheck"));
-            cmd.arg("sim").arg(&model).arg("--scenario").arg(&scn).arg("--json");
+            cmd.arg("sim")
+                .arg(&model)
+                .arg("--scenario")
+                .arg(&scn)
+                .arg("--json");
             if let Some(args) = directive(&text, "args") {
                 cmd.args(args.split_whitespace());
             }
@@ -103,7 +129,10 @@ fn example_scenarios_meet_their_expectations() {
             let json: Value = match serde_json::from_slice(&out.stdout) {
                 Ok(v) => v,
                 Err(e) => {
-                    failures.push(format!("{}: no JSON ({e}); stderr: {stderr}", scn.display()));
+                    failures.push(format!(
+                        "{}: no JSON ({e}); stderr: {stderr}",
+                        scn.display()
+                    ));
                     continue;
                 }
             };
@@ -118,6 +147,9 @@ fn example_scenarios_meet_their_expectations() {
             checked += 1;
         }
     }
-    assert!(checked >= 5, "expected the linear_drive scenarios, checked {checked}");
+    assert!(
+        checked >= 5,
+        "expected the linear_drive scenarios, checked {checked}"
+    );
     assert!(failures.is_empty(), "{}", failures.join("\n"));
 }

@@ -33,12 +33,19 @@ pub(crate) struct Layout {
 /// above it).
 pub(crate) fn remembers(chart: &statecheck_model::Chart, n: statecheck_model::StateId) -> bool {
     use statecheck_syntax::ast::HistoryKind;
-    if let NodeKind::Or { history: Some(_), .. } = chart.states[n as usize].kind {
+    if let NodeKind::Or {
+        history: Some(_), ..
+    } = chart.states[n as usize].kind
+    {
         return true;
     }
     let mut cur = chart.states[n as usize].parent;
     while let Some(p) = cur {
-        if let NodeKind::Or { history: Some(HistoryKind::Deep), .. } = chart.states[p as usize].kind {
+        if let NodeKind::Or {
+            history: Some(HistoryKind::Deep),
+            ..
+        } = chart.states[p as usize].kind
+        {
             return matches!(chart.states[n as usize].kind, NodeKind::Or { .. });
         }
         cur = chart.states[p as usize].parent;
@@ -380,7 +387,10 @@ pub(crate) fn layout(model: &Model, sys: &System) -> Layout {
             .collect(),
         started: fin(started),
         monitors: monitors_prov.into_iter().map(|p| p.map(fin)).collect(),
-        visited: visited_prov.into_iter().map(|v| v.into_iter().map(|p| p.map(fin)).collect()).collect(),
+        visited: visited_prov
+            .into_iter()
+            .map(|v| v.into_iter().map(|p| p.map(fin)).collect())
+            .collect(),
         slots,
     }
 }

@@ -685,7 +685,11 @@ impl<'m> Lowerer<'m> {
         match self.lay.visited[i as usize][n as usize] {
             Some(vis) => {
                 let one = self.konst(1);
-                vec![Stmt::Assign { slot: vis, expr: one, site: None }]
+                vec![Stmt::Assign {
+                    slot: vis,
+                    expr: one,
+                    site: None,
+                }]
             }
             None => Vec::new(),
         }

@@ -527,8 +527,16 @@ impl<'g> ExprChecker<'g> {
         };
         if args.len() != 1 {
             self.sink.push(
-                Diagnostic::error("E0112", format!("`{}(...)` converts one value, found {} arguments", func.name, args.len()), span)
-                    .with_label("wrong number of arguments"),
+                Diagnostic::error(
+                    "E0112",
+                    format!(
+                        "`{}(...)` converts one value, found {} arguments",
+                        func.name,
+                        args.len()
+                    ),
+                    span,
+                )
+                .with_label("wrong number of arguments"),
             );
             return Some(error_expr(span));
         }
@@ -539,14 +547,22 @@ impl<'g> ExprChecker<'g> {
                     return Some(Expr { span, ..arg });
                 }
                 let (lo, hi) = self.bounds(arg.ty);
-                Some(Expr { kind: arg.kind, ty: Type::Int { lo, hi }, span })
+                Some(Expr {
+                    kind: arg.kind,
+                    ty: Type::Int { lo, hi },
+                    span,
+                })
             }
             Some(e) => {
                 if !arg.ty.is_int() {
                     let tn = type_name(self.globals, arg.ty);
                     self.sink.push(
-                        Diagnostic::error("E0103", format!("`{}(...)` converts an integer, found `{tn}`", func.name), arg.span)
-                            .with_label(format!("this is a `{tn}`")),
+                        Diagnostic::error(
+                            "E0103",
+                            format!("`{}(...)` converts an integer, found `{tn}`", func.name),
+                            arg.span,
+                        )
+                        .with_label(format!("this is a `{tn}`")),
                     );
                     return Some(error_expr(span));
                 }
@@ -556,8 +572,16 @@ impl<'g> ExprChecker<'g> {
                 let kind = if let ExprKind::Const(v) = arg.kind {
                     if !(0..n).contains(&v) {
                         self.sink.push(
-                            Diagnostic::error("E0104", format!("{v} is not a literal index of `{}` (0..{})", func.name, n - 1), arg.span)
-                                .with_label("out of range"),
+                            Diagnostic::error(
+                                "E0104",
+                                format!(
+                                    "{v} is not a literal index of `{}` (0..{})",
+                                    func.name,
+                                    n - 1
+                                ),
+                                arg.span,
+                            )
+                            .with_label("out of range"),
                         );
                     }
                     ExprKind::Const(v.clamp(0, n - 1))
@@ -566,7 +590,11 @@ impl<'g> ExprChecker<'g> {
                 } else {
                     ExprKind::Check(Box::new(arg), 0, n - 1, what)
                 };
-                Some(Expr { kind, ty: Type::Enum(e), span })
+                Some(Expr {
+                    kind,
+                    ty: Type::Enum(e),
+                    span,
+                })
             }
         }
     }

@@ -83,7 +83,11 @@ pub fn render(p: &Program, views: &Views, trace: &[TickRecord], tick_ms: i64) ->
         for (path, e, _) in &views.states[i] {
             let parts: Vec<&str> = path.split('.').collect();
             let (parent, leaf) = parts.split_at(parts.len() - 1);
-            let common = open.iter().zip(parent).take_while(|(a, b)| a.as_str() == **b).count();
+            let common = open
+                .iter()
+                .zip(parent)
+                .take_while(|(a, b)| a.as_str() == **b)
+                .count();
             while open.len() > common {
                 open.pop();
                 let _ = writeln!(out, "$upscope $end");
