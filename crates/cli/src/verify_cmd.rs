@@ -7,6 +7,7 @@
 
 mod cex;
 mod report;
+mod symbolic;
 
 use crate::load;
 use anyhow::{bail, Result};
@@ -18,8 +19,19 @@ use std::time::Duration;
 /// Arguments of `statecheck verify`.
 #[derive(Args)]
 pub struct VerifyArgs {
-    /// The `.sc` model file.
+    /// The `.sc` model file, or an AIGER file (`.aag` ASCII, `.aig` binary) of a hardware model
+    /// checking problem.
     model: String,
+    /// The engine: explicit-state search, or SAT-based BMC, k-induction, IC3; `auto` runs the
+    /// explicit engine, IC3 and BMC side by side (see docs/verification.md).
+    #[arg(long, value_enum, default_value = "explicit")]
+    engine: symbolic::EngineArg,
+    /// Write the inductive invariant IC3 found for the (single) property to FILE.
+    #[arg(long, value_name = "FILE")]
+    certificate: Option<String>,
+    /// Check the inductive invariant in FILE for the (single) property instead of verifying.
+    #[arg(long, value_name = "FILE", conflicts_with = "certificate")]
+    check_certificate: Option<String>,
     /// The system (or chart) to verify.
     #[arg(long)]
     system: Option<String>,
@@ -57,10 +69,23 @@ pub struct VerifyArgs {
     /// Also write each counterexample as a VCD waveform `DIR/PROPERTY.vcd` (needs --cex-dir).
     #[arg(long, requires = "cex_dir")]
     vcd: bool,
+    // --- supervisor check (issue 7, docs/synthesis.md; implemented in synth_cmd) ---
+    /// Check MODEL as a supervisor of the plant in this file: controllability, nonblocking and
+    /// the requirements, in the closed loop (see docs/synthesis.md).
+    #[arg(long, value_name = "PLANT.sc")]
+    plant: Option<String>,
+    /// The plant file's system of plants and requirements (with --plant).
+    #[arg(long, value_name = "NAME", requires = "plant")]
+    plant_system: Option<String>,
 }
 
 /// Run the command; returns the exit code.
 pub fn run(a: VerifyArgs) -> Result<u8> {
+    if let Some(plant) = &a.plant {
+        let (sys, psys) = (a.system.as_deref(), a.plant_system.as_deref());
+        return crate::synth_cmd::verify_supervisor(&a.model, sys, plant, psys, a.quiet);
+    }
+    // --- end supervisor check ---
     let max_memory = match &a.max_memory {
         Some(s) => Some(parse_size(s)?),
         None => default_memory_limit(),
@@ -75,9 +100,28 @@ pub fn run(a: VerifyArgs) -> Result<u8> {
         Some(t) => Some(Duration::from_secs_f64(t)),
         None => None,
     };
+    if a.model.ends_with(".aag") || a.model.ends_with(".aig") {
+        return symbolic::run_aiger(&symbolic::AigerRun {
+            path: &a.model,
+            properties: &a.properties,
+            engine: a.engine,
+            timeout,
+            depth: a.depth,
+            json: a.json,
+            certificate: a.certificate.as_deref(),
+            check_certificate: a.check_certificate.as_deref(),
+        });
+    }
     let loaded = load::load(&a.model, false)?;
     let sys = loaded.system(a.system.as_deref())?;
     let program = loaded.lower(sys)?;
+    if let Some(cf) = &a.check_certificate {
+        let (aig, name) = symbolic::model_problem(&program, &a.properties)?;
+        return symbolic::check_certificate(&aig, &name, cf);
+    }
+    if a.certificate.is_some() && a.engine != symbolic::EngineArg::Ic3 {
+        bail!("--certificate needs --engine ic3");
+    }
     let opts = Options {
         properties: a.properties.clone(),
         depth: a.depth,
@@ -88,6 +132,21 @@ pub fn run(a: VerifyArgs) -> Result<u8> {
         force: a.force,
         ..Options::default()
     };
+    if let Some(run) = symbolic::run_model(&program, &opts, a.engine)? {
+        if let Some(cf) = &a.certificate {
+            symbolic::write_certificate(&run, cf)?;
+        }
+        let rep = run.report;
+        let cexs = cex::process(&loaded, &program, &rep, a.cex_dir.as_deref(), a.vcd)?;
+        if a.json {
+            let v = report::json(&program, &loaded.source, &rep, &cexs, &run.meta);
+            crate::write_out(None, &format!("{}\n", serde_json::to_string(&v)?))?;
+        } else {
+            let t = report::text(&loaded, &program, &rep, &cexs, a.quiet, &run.meta);
+            crate::write_out(None, &t)?;
+        }
+        return Ok(exit_code(&rep.results));
+    }
     report::announce_branching(&program, &opts, a.json || a.quiet);
     let bar = (!a.json && !a.quiet && std::io::stderr().is_terminal()).then(progress_bar);
     let tick = |p: &statecheck_explicit::Progress| {
@@ -112,10 +171,13 @@ pub fn run(a: VerifyArgs) -> Result<u8> {
     };
     let cexs = cex::process(&loaded, &program, &rep, a.cex_dir.as_deref(), a.vcd)?;
     if a.json {
-        let v = report::json(&program, &loaded.source, &rep, &cexs);
+        let v = report::json(&program, &loaded.source, &rep, &cexs, &[]);
         crate::write_out(None, &format!("{}\n", serde_json::to_string(&v)?))?;
     } else {
-        crate::write_out(None, &report::text(&loaded, &program, &rep, &cexs, a.quiet))?;
+        crate::write_out(
+            None,
+            &report::text(&loaded, &program, &rep, &cexs, a.quiet, &[]),
+        )?;
     }
     Ok(exit_code(&rep.results))
 }

@@ -191,8 +191,20 @@ pub struct VarDecl {
     pub ty: Option<TypeExpr>,
     /// Initial value; for inputs, the value used before any scenario sets one.
     pub init: Option<Expr>,
+    /// `controllable event e;` / `uncontrollable event u;` (synthesis, `docs/synthesis.md`):
+    /// an input event with a controllability; `None` for every other declaration.
+    pub control: Option<Control>,
     /// The whole declaration.
     pub span: Span,
+}
+
+/// Whether a supervisor may disable an event (`docs/synthesis.md`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Control {
+    /// `controllable event e;`: the supervisor may disable it.
+    Controllable,
+    /// `uncontrollable event u;`: the supervisor can never disable it.
+    Uncontrollable,
 }
 
 /// The inside of a state (or of a chart, or of a region): actions, children, transitions.
@@ -255,6 +267,8 @@ pub struct History {
 pub struct State {
     /// The state's name.
     pub name: Ident,
+    /// Written `marked state NAME …`: an accepting state for synthesis.
+    pub marked: bool,
     /// Its inside.
     pub body: StateBody,
     /// Whole state.
@@ -533,8 +547,33 @@ pub struct System {
     pub properties: Vec<Property>,
     /// Observer (assertion) charts declared inline: `observer Name { ...chart body... }`.
     pub observers: Vec<Chart>,
+    /// State-based synthesis requirements: `requirement never (…);`, `requirement e needs (…);`.
+    pub requirements: Vec<StateRequirement>,
     /// Whole system.
     pub span: Span,
+}
+
+/// A state-based requirement for supervisor synthesis (`docs/synthesis.md`).
+#[derive(Clone, Debug, PartialEq)]
+pub struct StateRequirement {
+    /// What it demands.
+    pub kind: RequirementKind,
+    /// Whole declaration.
+    pub span: Span,
+}
+
+/// The kinds of [`StateRequirement`].
+#[derive(Clone, Debug, PartialEq)]
+pub enum RequirementKind {
+    /// `requirement never (cond);`: no reachable state satisfies `cond`.
+    Never(Expr),
+    /// `requirement e needs (cond);`: event `e` may occur only where `cond` holds.
+    Needs {
+        /// The event.
+        event: Ident,
+        /// The condition on the state before the event.
+        cond: Expr,
+    },
 }
 
 /// `instance name: Chart;` or `instance name[N]: Chart;`

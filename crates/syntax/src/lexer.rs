@@ -106,6 +106,12 @@ pub enum Kw {
     Plant,
     /// `requirement`
     Requirement,
+    /// `controllable` (synthesis: an event the supervisor may disable)
+    Controllable,
+    /// `uncontrollable` (synthesis: an event the supervisor cannot disable)
+    Uncontrollable,
+    /// `marked` (synthesis: an accepting state)
+    Marked,
 }
 
 /// Every keyword with its spelling.
@@ -158,6 +164,9 @@ const KEYWORDS: &[(&str, Kw)] = &[
     ("observer", Kw::Observer),
     ("plant", Kw::Plant),
     ("requirement", Kw::Requirement),
+    ("controllable", Kw::Controllable),
+    ("uncontrollable", Kw::Uncontrollable),
+    ("marked", Kw::Marked),
 ];
 
 impl Kw {

@@ -112,6 +112,9 @@ fn is_chart_elem_kw(t: Tok) -> bool {
                 | Kw::Region
                 | Kw::Junction
                 | Kw::On
+                | Kw::Controllable
+                | Kw::Uncontrollable
+                | Kw::Marked
         )
     )
 }

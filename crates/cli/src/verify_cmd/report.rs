@@ -38,23 +38,37 @@ fn num(v: u128) -> Value {
     u64::try_from(v).map_or_else(|_| json!(v.to_string()), |x| json!(x))
 }
 
+/// Which engine decided a result, how long it took, and why it is `unknown` (symbolic
+/// engines; the explicit engine's run has one time and one limit for all properties).
+#[derive(Clone, Debug, Default)]
+pub struct Meta {
+    /// `explicit`, `bmc`, `kind` or `ic3`.
+    pub engine: &'static str,
+    /// Seconds spent on this property.
+    pub time_s: Option<f64>,
+    /// Why the verdict is `unknown`.
+    pub reason: Option<String>,
+}
+
 /// The JSON object of `statecheck verify --json`.
-pub fn json(p: &Program, source: &str, rep: &Report, cexs: &[Option<Cex>]) -> Value {
+pub fn json(p: &Program, source: &str, rep: &Report, cexs: &[Option<Cex>], meta: &[Meta]) -> Value {
     let s = &rep.stats;
     let results: Vec<Value> = rep
         .results
         .iter()
         .zip(cexs)
-        .map(|(r, c)| {
+        .enumerate()
+        .map(|(i, (r, c))| {
+            let m = meta.get(i);
             let mut o = json!({
                 "property": r.name,
                 "kind": r.kind.as_str(),
                 "verdict": r.verdict.as_str(),
-                "engine": "explicit",
+                "engine": m.map_or("explicit", |m| m.engine),
                 "depth": r.depth,
                 "states": s.states,
                 "transitions": s.transitions,
-                "time_s": s.time.as_secs_f64(),
+                "time_s": m.and_then(|m| m.time_s).unwrap_or(s.time.as_secs_f64()),
                 "counterexample": c.as_ref().and_then(|c| c.path.clone()),
             });
             if let Some(c) = c {
@@ -69,7 +83,9 @@ pub fn json(p: &Program, source: &str, rep: &Report, cexs: &[Option<Cex>]) -> Va
             if let Some(n) = &r.note {
                 o["note"] = json!(n);
             }
-            if r.verdict == Verdict::Unknown {
+            if let Some(why) = m.and_then(|m| m.reason.clone()) {
+                o["reason"] = json!(why);
+            } else if r.verdict == Verdict::Unknown {
                 o["reason"] = json!(s.limit.as_ref().map_or_else(
                     || "every other property was decided first".to_string(),
                     |l| l.describe()
@@ -140,8 +156,12 @@ pub fn text(
     rep: &Report,
     cexs: &[Option<Cex>],
     quiet: bool,
+    meta: &[Meta],
 ) -> String {
     let mut out = String::new();
+    if !meta.is_empty() {
+        return symbolic_text(loaded, p, rep, cexs, quiet, meta);
+    }
     let w = rep
         .results
         .iter()
@@ -264,4 +284,82 @@ fn stats_line(s: &Stats) -> String {
         s.state_bits,
         s.branching,
     )
+}
+
+/// The text report of a run of the symbolic engines (one engine and time per property).
+fn symbolic_text(
+    loaded: &Loaded,
+    p: &Program,
+    rep: &Report,
+    cexs: &[Option<Cex>],
+    quiet: bool,
+    meta: &[Meta],
+) -> String {
+    let mut out = String::new();
+    let w = rep
+        .results
+        .iter()
+        .map(|r| r.name.len())
+        .max()
+        .unwrap_or(8)
+        .max(8);
+    let _ = writeln!(
+        out,
+        "{:<w$}  {:<9}  {:<11}  {:<8}  {:>5}  time",
+        "property", "kind", "verdict", "engine", "depth"
+    );
+    for (r, m) in rep.results.iter().zip(meta) {
+        let _ = writeln!(
+            out,
+            "{:<w$}  {:<9}  {:<11}  {:<8}  {:>5}  {:.3} s{}",
+            r.name,
+            r.kind.as_str(),
+            r.verdict.as_str(),
+            m.engine,
+            r.depth,
+            m.time_s.unwrap_or(0.0),
+            m.reason
+                .as_ref()
+                .map(|x| format!("  ({x})"))
+                .unwrap_or_default()
+        );
+    }
+    if quiet {
+        return out;
+    }
+    let views = Views::new(&loaded.model, p);
+    for (r, c) in rep.results.iter().zip(cexs) {
+        let Some(c) = c else { continue };
+        let what = if r.verdict == Verdict::Reachable {
+            "witness"
+        } else {
+            "counterexample"
+        };
+        let at = c
+            .path
+            .as_ref()
+            .map(|f| format!(": {f}"))
+            .unwrap_or_default();
+        let _ = writeln!(
+            out,
+            "\n{what} for `{}` ({}, {} ticks, decided at tick {}){at}",
+            r.name,
+            r.kind.as_str(),
+            r.depth,
+            c.tick
+        );
+        out.push_str(&table::render(p, &views, &c.trace));
+        if let Some(e) = &r.error {
+            let _ = writeln!(
+                out,
+                "{:>4}  run-time error: {}",
+                c.tick,
+                p.describe_error(e)
+            );
+        }
+        if let Some(m) = &c.mismatch {
+            let _ = writeln!(out, "note: {m}");
+        }
+    }
+    out
 }

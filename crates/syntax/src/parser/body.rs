@@ -22,6 +22,7 @@ pub(super) fn is_body_kw(t: Tok) -> bool {
                 | Kw::Region
                 | Kw::Junction
                 | Kw::On
+                | Kw::Marked
         )
     )
 }
@@ -125,7 +126,10 @@ impl Parser<'_> {
             }
         } else if is_chart_elem_kw(t) {
             let kw = self.text(self.tok().span).to_string();
-            let (msg, hint) = if matches!(t, Tok::Kw(Kw::Input | Kw::Output | Kw::Local)) {
+            let (msg, hint) = if matches!(
+                t,
+                Tok::Kw(Kw::Input | Kw::Output | Kw::Local | Kw::Controllable | Kw::Uncontrollable)
+            ) {
                 (
                     "variables are declared at chart level, not inside a state",
                     "move this declaration to the top of the chart",
@@ -161,6 +165,7 @@ impl Parser<'_> {
             Tok::Kw(Kw::Initial) => self.initial_elem(body),
             Tok::Kw(Kw::History) => self.history_elem(body),
             Tok::Kw(Kw::State) => self.state_elem(body),
+            Tok::Kw(Kw::Marked) => self.marked_state_elem(body),
             Tok::Kw(Kw::Region) => self.region_elem(body),
             Tok::Kw(Kw::Junction) => self.junction_elem(body),
             Tok::Kw(Kw::On) => self.transition_elem(body),
@@ -170,6 +175,19 @@ impl Parser<'_> {
 
     fn state_elem(&mut self, body: &mut StateBody) -> PResult<()> {
         let s = self.state()?;
+        body.states.push(s);
+        Ok(())
+    }
+
+    /// `'marked' state`: an accepting state for synthesis.
+    #[inline(never)]
+    fn marked_state_elem(&mut self, body: &mut StateBody) -> PResult<()> {
+        self.bump();
+        if !self.at_kw(Kw::State) {
+            return Err(self.expected("`state` after `marked`"));
+        }
+        let mut s = self.state()?;
+        s.marked = true;
         body.states.push(s);
         Ok(())
     }
@@ -291,6 +309,7 @@ impl Parser<'_> {
         };
         Ok(State {
             name,
+            marked: false,
             body,
             span: self.span_from(start),
         })

@@ -3,8 +3,9 @@
 use super::body::is_body_kw;
 use super::{is_chart_elem_kw, is_item_kw, is_system_kw, Failed, PResult, Parser};
 use crate::ast::{
-    Assume, Chart, ConstDecl, EnumDecl, Expr, File, FnDecl, Ident, Instance, Item, OrderDecl,
-    Param, Property, PropertyKind, StateBody, System, TickDecl, VarDecl, VarKind,
+    Assume, Chart, ConstDecl, Control, EnumDecl, Expr, File, FnDecl, Ident, Instance, Item,
+    OrderDecl, Param, Property, PropertyKind, RequirementKind, StateBody, StateRequirement, System,
+    TickDecl, VarDecl, VarKind,
 };
 use crate::lexer::{Kw, Tok};
 use statecheck_base::{Diagnostic, Span};
@@ -316,6 +317,9 @@ impl Parser<'_> {
                 Tok::Kw(Kw::Input | Kw::Output | Kw::Local) => {
                     self.var_decl().map(|v| chart.vars.push(v))
                 }
+                Tok::Kw(Kw::Controllable | Kw::Uncontrollable) => {
+                    self.event_decl().map(|v| chart.vars.push(v))
+                }
                 Tok::Kw(Kw::Invariant | Kw::Reachable | Kw::Respond) => {
                     self.property().map(|p| chart.properties.push(p))
                 }
@@ -369,6 +373,7 @@ impl Parser<'_> {
                 name,
                 ty: None,
                 init: None,
+                control: None,
                 span: t.span,
             }
         } else {
@@ -395,6 +400,7 @@ impl Parser<'_> {
                 name,
                 ty: Some(ty),
                 init,
+                control: None,
                 span: t.span,
             }
         };
@@ -402,6 +408,66 @@ impl Parser<'_> {
         Ok(VarDecl {
             span: self.span_from(t.span),
             ..decl
+        })
+    }
+
+    /// `( 'controllable' | 'uncontrollable' ) 'event' IDENT ';'`: an input event with a
+    /// controllability, for synthesis.
+    fn event_decl(&mut self) -> PResult<VarDecl> {
+        let t = self.bump();
+        let control = if t.kind == Tok::Kw(Kw::Controllable) {
+            Control::Controllable
+        } else {
+            Control::Uncontrollable
+        };
+        let kw = self.text(t.span).to_string();
+        if self.eat_kw(Kw::Event).is_none() {
+            return Err(self.expected(&format!("`event` after `{kw}`")));
+        }
+        let name = self.expect_ident("an event name after `event`")?;
+        self.expect_semi("after the event declaration");
+        Ok(VarDecl {
+            kind: VarKind::Input,
+            is_event: true,
+            name,
+            ty: None,
+            init: None,
+            control: Some(control),
+            span: self.span_from(t.span),
+        })
+    }
+
+    /// `'requirement' ( 'never' expr | IDENT 'needs' expr ) ';'` inside a system.
+    fn state_requirement(&mut self) -> PResult<StateRequirement> {
+        let start = self.bump().span;
+        if !self.at(Tok::Ident) {
+            return Err(self.expected("`never` or an event name after `requirement`"));
+        }
+        let first = self.bump();
+        let first = self.ident_of(first);
+        let kind = if first.name == "never" {
+            RequirementKind::Never(self.expr())
+        } else {
+            let ok = self.at(Tok::Ident) && self.text(self.tok().span) == "needs";
+            if !ok {
+                let d = self
+                    .expected_diag("`needs` after the event name")
+                    .with_hint(
+                        "write `requirement never (cond);` or `requirement e needs (cond);`",
+                    );
+                self.report(d);
+                return Err(Failed);
+            }
+            self.bump();
+            RequirementKind::Needs {
+                event: first,
+                cond: self.expr(),
+            }
+        };
+        self.expect_semi("after the requirement");
+        Ok(StateRequirement {
+            kind,
+            span: self.span_from(start),
         })
     }
 
@@ -480,9 +546,21 @@ impl Parser<'_> {
             assumes: Vec::new(),
             properties: Vec::new(),
             observers: Vec::new(),
+            requirements: Vec::new(),
             span: start,
         };
         loop {
+            if self.at_kw(Kw::Requirement) && self.nth(1).kind != Tok::Kw(Kw::Chart) {
+                let pos = self.pos;
+                match self.state_requirement() {
+                    Ok(r) => sys.requirements.push(r),
+                    Err(Failed) => self.recover(),
+                }
+                if self.pos == pos {
+                    self.bump();
+                }
+                continue;
+            }
             if self.at_list_end(open, &what, is_item_kw) {
                 break;
             }

@@ -1,0 +1,164 @@
+//! Running an engine on a program's properties, with answers in the explicit engine's terms
+//! (verdicts, counterexamples as input vectors), so that both engines share one report.
+
+use crate::blast::{blast, Blasted};
+use crate::engine::{Invariant, Limits, Outcome, Trace};
+use statecheck_explicit::{props, PropKind, PropResult, Verdict};
+use statecheck_ir::{Machine, Program};
+use std::time::{Duration, Instant};
+
+/// A SAT-based engine.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Engine {
+    /// Bounded model checking.
+    Bmc,
+    /// k-induction.
+    Kind,
+    /// IC3/PDR.
+    Ic3,
+}
+
+impl Engine {
+    /// The name used on the command line and in JSON.
+    pub fn as_str(self) -> &'static str {
+        match self {
+            Engine::Bmc => "bmc",
+            Engine::Kind => "kind",
+            Engine::Ic3 => "ic3",
+        }
+    }
+
+    /// Run on a one-property circuit.
+    pub fn run(self, aig: &crate::aig::Aig, limits: &Limits) -> Outcome {
+        match self {
+            Engine::Bmc => crate::bmc::bmc(aig, limits),
+            Engine::Kind => crate::kind::kind(aig, limits),
+            Engine::Ic3 => crate::ic3::ic3(aig, limits),
+        }
+    }
+}
+
+/// The answer for one property.
+#[derive(Clone, Debug)]
+pub struct SymResult {
+    /// The verdict, in the explicit engine's terms.
+    pub result: PropResult,
+    /// The inductive invariant of a proof by IC3, with the circuit it is about.
+    pub invariant: Option<(crate::aig::Aig, Invariant)>,
+    /// Time spent on this property.
+    pub time: Duration,
+    /// Why the verdict is `unknown`, if it is.
+    pub reason: Option<String>,
+}
+
+/// The circuit of each selected property (`Err`: an unknown property name).
+pub fn problems(
+    p: &Program,
+    names: &[String],
+) -> Result<(Blasted, Vec<(usize, PropKind)>), String> {
+    let specs = props::select(p, names)?;
+    let bl = blast(p);
+    let idx = specs
+        .iter()
+        .map(|s| {
+            let i = bl.props.iter().position(|x| x.name == s.name).unwrap_or(0);
+            (i, s.kind)
+        })
+        .collect();
+    Ok((bl, idx))
+}
+
+/// Decide property `prop` (index into `bl.props`) of `p` with `engine`.
+pub fn decide(
+    p: &Program,
+    bl: &Blasted,
+    prop: usize,
+    kind: PropKind,
+    engine: Engine,
+    limits: &Limits,
+) -> SymResult {
+    let start = Instant::now();
+    let aig = bl.problem(prop);
+    let out = engine.run(&aig, limits);
+    let sig = &bl.props[prop];
+    let reach = sig.reachable;
+    let mut r = PropResult {
+        name: sig.name.clone(),
+        kind,
+        verdict: Verdict::Unknown,
+        depth: 0,
+        counterexample: None,
+        error: None,
+        note: None,
+    };
+    let mut invariant = None;
+    let mut reason = None;
+    match out {
+        Outcome::Reached(t) => {
+            let vectors = input_vectors(bl, &t);
+            r.verdict = if reach {
+                Verdict::Reachable
+            } else {
+                Verdict::Violated
+            };
+            r.depth = vectors.len() as u64;
+            r.error = replay_error(p, &vectors);
+            r.counterexample = Some(vectors);
+        }
+        Outcome::Proved(inv) => {
+            r.verdict = if reach {
+                Verdict::Unreachable
+            } else {
+                Verdict::Proved
+            };
+            invariant = inv.map(|i| (aig, i));
+        }
+        Outcome::Bounded(k) => {
+            r.verdict = Verdict::Bounded;
+            r.depth = k as u64;
+        }
+        Outcome::Unknown(why) => reason = Some(why),
+    }
+    SymResult {
+        result: r,
+        invariant,
+        time: start.elapsed(),
+        reason,
+    }
+}
+
+/// The input vectors (in `Program::inputs` order) of a trace of one of `bl`'s problems (they
+/// keep every input, in order).
+pub fn input_vectors(bl: &Blasted, t: &Trace) -> Vec<Vec<i64>> {
+    let aig = &bl.aig;
+    t.inputs
+        .iter()
+        .map(|frame| {
+            bl.inputs
+                .iter()
+                .map(|enc| {
+                    let bits: Vec<bool> = enc
+                        .bits
+                        .iter()
+                        .map(|b| frame[aig.nodes[b.var() as usize].input_index()])
+                        .collect();
+                    enc.decode(&bits)
+                })
+                .collect()
+        })
+        .collect()
+}
+
+/// The run-time error the last tick of `vectors` ends with, if any.
+fn replay_error(p: &Program, vectors: &[Vec<i64>]) -> Option<statecheck_ir::RuntimeError> {
+    let mut m = Machine::new(p);
+    for v in vectors {
+        for (k, inp) in p.inputs.iter().enumerate() {
+            m.set(inp.slot, v[k]);
+        }
+        if let Err(e) = m.step() {
+            return Some(e);
+        }
+    }
+    None
+}
