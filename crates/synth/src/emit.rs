@@ -201,8 +201,24 @@ pub fn emit(p: &Problem, sup: &Supervisor, source: &str) -> String {
     o
 }
 
+/// `s` as one parenthesised group: unchanged if its first `(` closes at its very end, else
+/// wrapped. (`(a) || (b)` starts and ends with a parenthesis but is two groups.)
 fn paren(s: &str) -> String {
-    if s.starts_with('(') && s.ends_with(')') {
+    let mut depth = 0usize;
+    let mut one_group = s.starts_with('(');
+    for (i, c) in s.char_indices() {
+        match c {
+            '(' => depth += 1,
+            ')' => {
+                depth = depth.saturating_sub(1);
+                if depth == 0 && i + 1 < s.len() {
+                    one_group = false;
+                }
+            }
+            _ => {}
+        }
+    }
+    if one_group {
         s.to_string()
     } else {
         format!("({s})")
@@ -251,4 +267,20 @@ pub fn guard_text(p: &Problem, f: &crate::Formula) -> String {
         let aut = &p.automata[a as usize];
         format!("in({}.{})", aut.name, aut.locs[l as usize])
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::paren;
+
+    #[test]
+    fn paren_wraps_unless_one_group() {
+        assert_eq!(paren("(a)"), "(a)");
+        assert_eq!(paren("((a) || (b))"), "((a) || (b))");
+        assert_eq!(paren("a || b"), "(a || b)");
+        // Two groups: the `reachable all_marked` disjunction of an automaton with two marked
+        // states was left unwrapped, so `&&` bound tighter than the disjunction.
+        assert_eq!(paren("(a) || (b)"), "((a) || (b))");
+        assert_eq!(paren("(a) && !(b)"), "((a) && !(b))");
+    }
 }
