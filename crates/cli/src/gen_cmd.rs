@@ -23,6 +23,10 @@ pub struct GenArgs {
     /// the trace as `statecheck sim --json` does.
     #[arg(long)]
     harness: bool,
+    /// Modelica only: add coverage counters, one per state entry and one per transition
+    /// (`stateCoverage`, `transitionCoverage`).
+    #[arg(long)]
+    coverage: bool,
 }
 
 /// Run the command; returns the exit code.
@@ -32,6 +36,9 @@ pub fn run(a: GenArgs) -> Result<u8> {
     let program = loaded.lower(sys)?;
     let src = Source::new(&loaded.path, &loaded.source);
     let prefix = statecheck_codegen::common::ident(&program.name).to_lowercase();
+    if a.coverage && a.target != "modelica" {
+        bail!("--coverage applies to the modelica target only");
+    }
     match a.target.as_str() {
         "c" => {
             let dir = out_dir(a.output.as_deref())?;
@@ -58,6 +65,24 @@ pub fn run(a: GenArgs) -> Result<u8> {
             let path = dir.join(format!("{prefix}.rs"));
             write(&path, &statecheck_codegen::rust::generate(&program, &src))?;
             eprintln!("wrote {}", path.display());
+            Ok(0)
+        }
+        "modelica" => {
+            if a.harness {
+                bail!("--harness applies to the c target only");
+            }
+            let opts = statecheck_codegen::modelica::ModelicaOptions {
+                coverage: a.coverage,
+            };
+            let text = statecheck_codegen::modelica::generate(&program, &loaded.model, &src, &opts)
+                .map_err(|e| anyhow::anyhow!("cannot generate Modelica: {e}"))?;
+            match a.output.as_deref() {
+                Some(f) => {
+                    write(Path::new(f), &text)?;
+                    eprintln!("wrote {f}");
+                }
+                None => print!("{text}"),
+            }
             Ok(0)
         }
         other => bail!("unknown target `{other}` (expected c, rust or modelica)"),

@@ -10,6 +10,7 @@ pub mod c;
 mod c_expr;
 mod c_harness;
 pub mod common;
+pub mod modelica;
 pub mod observe;
 pub mod promela;
 pub mod rust;
