@@ -23,7 +23,7 @@ pub struct VerifyArgs {
     /// checking problem.
     model: String,
     /// The engine: explicit-state search, or SAT-based BMC, k-induction, IC3; `auto` runs the
-    /// explicit engine, IC3 and BMC side by side (see docs/verification.md).
+    /// explicit engine, IC3, k-induction and BMC side by side (see docs/verification.md).
     #[arg(long, value_enum, default_value = "explicit")]
     engine: symbolic::EngineArg,
     /// Write the inductive invariant IC3 found for the (single) property to FILE.

@@ -112,7 +112,20 @@ enum Msg {
     Done,
 }
 
-/// `--engine auto`: the explicit engine, IC3 and BMC run side by side; each property gets the
+/// The symbolic engines `--engine auto` races (besides the explicit one): IC3 for proofs,
+/// k-induction for proofs whose invariant is "no bad state within k ticks", BMC for deep
+/// counterexamples.
+const SYMBOLIC_RACE: [Engine; 3] = [Engine::Ic3, Engine::Kind, Engine::Bmc];
+
+/// Per-property budgets of the passes each racing engine makes over the undecided properties
+/// (`None`: until the deadline).
+const AUTO_BUDGETS: [Option<Duration>; 3] = [
+    Some(Duration::from_secs(1)),
+    Some(Duration::from_secs(10)),
+    None,
+];
+
+/// `--engine auto`: the explicit engine, IC3, k-induction and BMC run side by side; each property gets the
 /// first definitive verdict and the engine that found it.
 pub fn run_auto(p: &Program, opts: &Options) -> Result<Run> {
     let (bl, idx) = problems(p, &opts.properties).map_err(|e| anyhow::anyhow!(e))?;
@@ -136,19 +149,52 @@ pub fn run_auto(p: &Program, opts: &Options) -> Result<Run> {
         });
     }
     let bl = Arc::new(bl);
+    // One stop flag per property: raised when any engine decides it (the others move on to
+    // the next property) and, for all, when the run ends.
+    let flags: Arc<Vec<Arc<AtomicBool>>> =
+        Arc::new((0..n).map(|_| Arc::new(AtomicBool::new(false))).collect());
+    let deadline = opts.timeout.map(|t| started + t);
     let mut workers = Vec::new();
-    for engine in [Engine::Ic3, Engine::Bmc] {
+    for engine in SYMBOLIC_RACE {
         let tx = tx.clone();
         let p = p.clone();
         let bl = Arc::clone(&bl);
         let idx = idx.clone();
-        let lim = limits(opts.timeout, opts.depth, Some(Arc::clone(&stop)));
+        let flags = Arc::clone(&flags);
+        let depth = opts.depth.map(|d| d as usize);
+        let stop = Arc::clone(&stop);
         workers.push(std::thread::spawn(move || {
-            for (i, &(pi, kind)) in idx.iter().enumerate() {
-                let s = decide(&p, &bl, pi, kind, engine, &lim);
-                let _ = tx.send(Msg::Symbolic(i, engine.as_str(), Box::new(s)));
-                if lim.expired().is_some() {
-                    break;
+            // Passes with growing budgets per property, so that one hard property does not
+            // starve the easy ones behind it; the last pass runs to the deadline.
+            // BMC deepens one unrolling and would lose it on a restart: one pass.
+            let budgets: &[Option<Duration>] = if engine == Engine::Bmc {
+                &[None]
+            } else {
+                &AUTO_BUDGETS
+            };
+            'passes: for (pass, budget) in budgets.iter().enumerate() {
+                let last = pass + 1 == budgets.len();
+                for (i, &(pi, kind)) in idx.iter().enumerate() {
+                    if flags[i].load(Ordering::Relaxed) {
+                        continue;
+                    }
+                    let until = budget.map(|b| Instant::now() + b);
+                    let lim = Limits {
+                        deadline: match (deadline, until) {
+                            (Some(d), Some(u)) => Some(d.min(u)),
+                            (d, u) => d.or(u),
+                        },
+                        max_depth: depth,
+                        stop: Some(Arc::clone(&flags[i])),
+                    };
+                    let s = decide(&p, &bl, pi, kind, engine, &lim);
+                    if last || definitive(&s.result) {
+                        let _ = tx.send(Msg::Symbolic(i, engine.as_str(), Box::new(s)));
+                    }
+                    if stop.load(Ordering::Relaxed) || deadline.is_some_and(|d| Instant::now() >= d)
+                    {
+                        break 'passes;
+                    }
                 }
             }
             let _ = tx.send(Msg::Done);
@@ -160,7 +206,7 @@ pub fn run_auto(p: &Program, opts: &Options) -> Result<Run> {
     let mut explicit_stats = None;
     let mut done = 0;
     let mut explicit_done = false;
-    while got.iter().any(Option::is_none) && !(done == 2 && explicit_done) {
+    while got.iter().any(Option::is_none) && !(done == SYMBOLIC_RACE.len() && explicit_done) {
         let wait = opts
             .timeout
             .map(|t| t.saturating_sub(started.elapsed()) + Duration::from_millis(200));
@@ -185,6 +231,7 @@ pub fn run_auto(p: &Program, opts: &Options) -> Result<Run> {
                             reason: None,
                         };
                         if definitive(r) && got[i].is_none() {
+                            flags[i].store(true, Ordering::Relaxed);
                             got[i] = Some((r.clone(), m, None));
                         } else if fallback[i].is_none() {
                             fallback[i] = Some((r.clone(), m));
@@ -196,6 +243,7 @@ pub fn run_auto(p: &Program, opts: &Options) -> Result<Run> {
             Msg::Symbolic(i, engine, s) => {
                 let m = meta_of(engine, &s);
                 if definitive(&s.result) && got[i].is_none() {
+                    flags[i].store(true, Ordering::Relaxed);
                     got[i] = Some((s.result, m, s.invariant));
                 } else if engine == "ic3" {
                     fallback[i] = Some((s.result, m));
@@ -205,6 +253,9 @@ pub fn run_auto(p: &Program, opts: &Options) -> Result<Run> {
         }
     }
     stop.store(true, Ordering::Relaxed);
+    for f in flags.iter() {
+        f.store(true, Ordering::Relaxed);
+    }
     for w in workers {
         let _ = w.join();
     }
@@ -475,14 +526,14 @@ pub fn run_aiger(a: &AigerRun) -> Result<u8> {
     Ok(code)
 }
 
-/// IC3 and BMC side by side on one circuit; the first definitive answer.
+/// IC3, k-induction and BMC side by side on one circuit; the first definitive answer.
 fn race(g: &Aig, lim: &Limits) -> (Outcome, &'static str) {
     let stop = Arc::new(AtomicBool::new(false));
     let mut l = lim.clone();
     l.stop = Some(Arc::clone(&stop));
     std::thread::scope(|s| {
         let (tx, rx) = mpsc::channel();
-        for e in [Engine::Ic3, Engine::Bmc] {
+        for e in SYMBOLIC_RACE {
             let tx = tx.clone();
             let l = l.clone();
             s.spawn(move || {
