@@ -61,6 +61,38 @@ fn synth_small_factory_then_verify() {
         "{}",
         String::from_utf8_lossy(&o.stdout)
     );
+    // And it goes through the code generators: C99 that compiles warning-free.
+    let c_dir = dir.join("c");
+    let o = bin()
+        .args(["gen", "c"])
+        .arg(&out)
+        .args(["--harness", "-o"])
+        .arg(&c_dir)
+        .output()
+        .expect("runs");
+    assert_eq!(
+        o.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&o.stderr)
+    );
+    if Command::new("gcc").arg("--version").output().is_ok() {
+        let o = Command::new("gcc")
+            .args([
+                "-std=c99",
+                "-Wall",
+                "-Wextra",
+                "-Wpedantic",
+                "-Werror",
+                "-o",
+            ])
+            .arg(c_dir.join("h"))
+            .arg(c_dir.join("supervised.c"))
+            .arg(c_dir.join("supervised_harness.c"))
+            .output()
+            .expect("gcc runs");
+        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    }
     let _ = std::fs::remove_dir_all(&dir);
 }
 
