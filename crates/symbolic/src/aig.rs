@@ -292,6 +292,11 @@ impl Aig {
     /// A copy without the logic and latches outside the cone of influence (every input is
     /// kept, in order, so input vectors mean the same).
     pub fn reduced(&self) -> Aig {
+        self.reduced_with_latches().0
+    }
+
+    /// [`Aig::reduced`], with the index in `self` of each latch kept.
+    pub fn reduced_with_latches(&self) -> (Aig, Vec<usize>) {
         let seen = self.cone();
         let mut g = Aig::new();
         let mut map: Vec<Lit> = vec![Lit::FALSE; self.nodes.len()];
@@ -320,6 +325,6 @@ impl Aig {
         g.bad = self.bad.iter().map(|&l| m(l)).collect();
         g.constraints = self.constraints.iter().map(|&l| m(l)).collect();
         g.bad_names = self.bad_names.clone();
-        g
+        (g, kept)
     }
 }

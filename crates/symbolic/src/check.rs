@@ -1,10 +1,13 @@
 //! Running an engine on a program's properties, with answers in the explicit engine's terms
 //! (verdicts, counterexamples as input vectors), so that both engines share one report.
 
+use crate::aig::Aig;
 use crate::blast::{blast, Blasted};
 use crate::engine::{Invariant, Limits, Outcome, Trace};
+use crate::scorr::{Reduction, SPURIOUS};
 use statecheck_explicit::{props, PropKind, PropResult, Verdict};
 use statecheck_ir::{Machine, Program};
+use std::sync::{Arc, Mutex};
 use std::time::{Duration, Instant};
 
 /// A SAT-based engine.
@@ -38,6 +41,74 @@ impl Engine {
     }
 }
 
+/// How long IC3 and k-induction try the circuit as blasted before it is reduced by signal
+/// correspondence ([`crate::scorr`]): most properties are decided well within it, and the
+/// reduction costs seconds on a large circuit.
+pub const QUICK: Duration = Duration::from_secs(1);
+
+/// Reductions of a run's problems, computed at most once each and shared by the engines.
+#[derive(Debug, Default)]
+pub struct Reductions {
+    slots: Vec<Mutex<Option<Option<Arc<Reduction>>>>>,
+}
+
+impl Reductions {
+    /// Room for `n` problems.
+    pub fn new(n: usize) -> Reductions {
+        Reductions {
+            slots: (0..n).map(|_| Mutex::new(None)).collect(),
+        }
+    }
+
+    /// The reduction of problem `i` (circuit `aig`), computed on first use under the run's
+    /// limits; `None` when it was stopped (it is tried again next time) or removes nothing.
+    pub fn get(&self, i: usize, aig: &Aig, limits: &Limits) -> Option<Arc<Reduction>> {
+        let slot = self.slots.get(i)?;
+        // A poisoned lock only means another engine's thread panicked: the data is intact.
+        let mut g = slot.lock().unwrap_or_else(|e| e.into_inner());
+        if let Some(r) = g.as_ref() {
+            return r.clone();
+        }
+        match crate::scorr::reduce(aig, &limits.for_run()) {
+            Ok(r) => {
+                let useful = r.stats.merged > 0 || r.stats.latches.1 < r.stats.latches.0;
+                let r = useful.then(|| Arc::new(r));
+                *g = Some(r.clone());
+                r
+            }
+            Err(_) => None,
+        }
+    }
+}
+
+/// Run IC3 or k-induction on problem `i`: first on the circuit as blasted for [`QUICK`], then
+/// on its reduction by signal correspondence (when the first attempt did not decide), falling
+/// back to the blasted circuit if a counterexample of the reduced one does not replay.
+/// BMC always runs on the blasted circuit (its counterexamples are found frame by frame, and
+/// the reduction would only delay them).
+pub fn run_reduced(
+    engine: Engine,
+    aig: &Aig,
+    i: usize,
+    reductions: &Reductions,
+    limits: &Limits,
+) -> Outcome {
+    if engine == Engine::Bmc {
+        return engine.run(aig, limits);
+    }
+    let quick = engine.run(aig, &limits.attempt_until(Instant::now() + QUICK));
+    if !matches!(quick, Outcome::Unknown(_)) || limits.expired().is_some() {
+        return quick;
+    }
+    let Some(red) = reductions.get(i, aig, limits) else {
+        return engine.run(aig, limits);
+    };
+    match red.lift(aig, engine.run(&red.aig, limits)) {
+        Outcome::Unknown(why) if why == SPURIOUS => engine.run(aig, limits),
+        out => out,
+    }
+}
+
 /// The answer for one property.
 #[derive(Clone, Debug)]
 pub struct SymResult {
@@ -68,7 +139,8 @@ pub fn problems(
     Ok((bl, idx))
 }
 
-/// Decide property `prop` (index into `bl.props`) of `p` with `engine`.
+/// Decide property `prop` (index into `bl.props`) of `p` with `engine` (IC3 and k-induction
+/// through [`run_reduced`], with `reductions` indexed like `bl.props`).
 pub fn decide(
     p: &Program,
     bl: &Blasted,
@@ -76,10 +148,11 @@ pub fn decide(
     kind: PropKind,
     engine: Engine,
     limits: &Limits,
+    reductions: &Reductions,
 ) -> SymResult {
     let start = Instant::now();
     let aig = bl.problem(prop);
-    let out = engine.run(&aig, limits);
+    let out = run_reduced(engine, &aig, prop, reductions, limits);
     let sig = &bl.props[prop];
     let reach = sig.reachable;
     let mut r = PropResult {

@@ -35,6 +35,10 @@ pub enum Outcome {
 pub struct Limits {
     /// Stop at this time.
     pub deadline: Option<Instant>,
+    /// Stop this attempt at this time: a budget within the run (`--engine auto` gives each
+    /// property growing slices). Work shared between attempts, such as a circuit reduction
+    /// that is computed once, runs to [`Limits::deadline`] instead.
+    pub attempt_deadline: Option<Instant>,
     /// Consider traces of at most this many frames.
     pub max_depth: Option<usize>,
     /// Stop when this flag is raised (another engine answered first).
@@ -42,8 +46,34 @@ pub struct Limits {
 }
 
 impl Limits {
+    /// The same limits with the attempt ending at `until` at the latest.
+    pub fn attempt_until(&self, until: Instant) -> Limits {
+        Limits {
+            attempt_deadline: Some(self.attempt_deadline.map_or(until, |d| d.min(until))),
+            ..self.clone()
+        }
+    }
+
+    /// The limits of work shared between attempts (no attempt budget).
+    pub fn for_run(&self) -> Limits {
+        Limits {
+            attempt_deadline: None,
+            ..self.clone()
+        }
+    }
+}
+
+impl Limits {
     /// Why the engine must stop now, if it must.
     pub fn expired(&self) -> Option<String> {
+        if self.attempt_deadline.is_some_and(|d| Instant::now() >= d) {
+            return Some("time budget of this attempt used up".into());
+        }
+        self.run_expired()
+    }
+
+    /// Why work shared between attempts must stop now: the stop flag or the run's deadline.
+    pub fn run_expired(&self) -> Option<String> {
         if self
             .stop
             .as_ref()

@@ -76,6 +76,16 @@ struct Obligation {
     cube: Cube,
 }
 
+/// Whether a satisfiable [`Ic3::relative`] query must leave its predecessor in `Ic3::pred`.
+#[derive(Clone, Copy, PartialEq, Eq)]
+enum Pred {
+    /// No: the caller only needs the answer (pushing clauses, blocking a CTG), so the
+    /// lifting query is saved.
+    Unused,
+    /// Yes, lifted to a sub-cube (proof obligations, and the join of a CTG in `down`).
+    Lifted,
+}
+
 enum Block {
     Blocked,
     Cex,
@@ -282,8 +292,9 @@ impl<'a> Ic3<'a> {
     }
 
     /// Is `¬cube` inductive relative to `F_level`? On success, the literals of `cube` the
-    /// answer depends on (a sub-cube); on failure the solver holds a predecessor.
-    fn relative(&mut self, level: usize, cube: &Cube) -> Result<Option<Cube>, String> {
+    /// answer depends on (a sub-cube); on failure, with `want`, the lifted predecessor is left
+    /// in `self.pred`.
+    fn relative(&mut self, level: usize, cube: &Cube, want: Pred) -> Result<Option<Cube>, String> {
         self.recycle(level);
         let act = self.solvers[level].s.fresh();
         self.solvers[level].dead += 1;
@@ -308,9 +319,11 @@ impl<'a> Ic3<'a> {
         };
         let res = if sat {
             // Read the predecessor before the solver changes state.
-            let full = self.model_cube(level);
-            let ins = self.model_inputs(level);
-            self.pred = self.lift(full, &ins, Some(cube));
+            if want == Pred::Lifted {
+                let full = self.model_cube(level);
+                let ins = self.model_inputs(level);
+                self.pred = self.lift(full, &ins, Some(cube));
+            }
             None
         } else {
             let failed: HashSet<SLit> = self.solvers[level].s.failed().into_iter().collect();
@@ -385,12 +398,12 @@ impl<'a> Ic3<'a> {
             if cand.is_empty() || self.intersects_init(&cand) {
                 return Ok(None);
             }
-            if let Some(core) = self.relative(level, &cand)? {
+            if let Some(core) = self.relative(level, &cand, Pred::Lifted)? {
                 return Ok(Some(self.fix_init(core, &cand)));
             }
             let s = std::mem::take(&mut self.pred);
             if depth > 0 && ctgs < MAX_CTGS && level > 0 && !self.intersects_init(&s) {
-                if let Some(core) = self.relative(level - 1, &s)? {
+                if let Some(core) = self.relative(level - 1, &s, Pred::Unused)? {
                     ctgs += 1;
                     let g = self.generalize_ctg(level - 1, &s, core, depth - 1)?;
                     self.add_blocked(g, level)?;
@@ -411,7 +424,7 @@ impl<'a> Ic3<'a> {
     fn add_blocked(&mut self, g: Cube, from: usize) -> Result<usize, String> {
         let mut at = from;
         let top = self.frames.len() - 1;
-        while at < top && self.relative(at, &g)?.is_some() {
+        while at < top && self.relative(at, &g, Pred::Unused)?.is_some() {
             at += 1;
         }
         for lv in 1..=at {
@@ -438,7 +451,7 @@ impl<'a> Ic3<'a> {
             if let Some(why) = self.limits.expired() {
                 return Ok(Block::Stopped(why));
             }
-            match self.relative(l - 1, &ob.cube)? {
+            match self.relative(l - 1, &ob.cube, Pred::Lifted)? {
                 None => {
                     let pred = std::mem::take(&mut self.pred);
                     q.push(Obligation {
@@ -513,7 +526,7 @@ impl<'a> Ic3<'a> {
                 let cubes = std::mem::take(&mut self.frames[i]);
                 let mut stay = Vec::new();
                 for c in cubes {
-                    if self.relative(i, &c)?.is_some() {
+                    if self.relative(i, &c, Pred::Unused)?.is_some() {
                         self.add_clause(i + 1, &c);
                         self.frames[i + 1].push(c);
                     } else {

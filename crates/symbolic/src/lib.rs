@@ -19,3 +19,4 @@ pub mod engine;
 pub mod ic3;
 pub mod kind;
 pub mod sat;
+pub mod scorr;

@@ -34,6 +34,10 @@ impl Solver {
         let mut c = CaDiCaL::default();
         // Fails only for an unknown configuration name; the default configuration is sound.
         let _ = c.set_configuration(rustsat_cadical::Config::Plain);
+        // "Lucky" phase checks try eight trivial assignments by full propagation before every
+        // call: on thousands of small incremental queries over a large formula they cost more
+        // than the search itself. (Fails only for an unknown option name.)
+        let _ = c.set_option("lucky", 0);
         Solver::with(c)
     }
 

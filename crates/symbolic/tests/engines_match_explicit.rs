@@ -6,7 +6,7 @@
 
 use statecheck_explicit::{Options, PropKind, Verdict};
 use statecheck_ir::{lower, Machine, Program, PropertyKind};
-use statecheck_symbolic::check::{decide, problems, Engine};
+use statecheck_symbolic::check::{decide, problems, Engine, Reductions};
 use statecheck_symbolic::engine::Limits;
 use std::path::{Path, PathBuf};
 use std::time::{Duration, Instant};
@@ -122,7 +122,15 @@ fn engines_agree_with_the_explicit_engine() {
                         deadline: Some(Instant::now() + Duration::from_secs(30)),
                         ..Limits::default()
                     };
-                    let s = decide(&p, &bl, pi, kind, engine, &lim);
+                    let s = decide(
+                        &p,
+                        &bl,
+                        pi,
+                        kind,
+                        engine,
+                        &lim,
+                        &Reductions::new(bl.props.len()),
+                    );
                     if engine == Engine::Kind && s.result.verdict == Verdict::Unknown {
                         eprintln!("{at}: k-induction gave up");
                         continue;

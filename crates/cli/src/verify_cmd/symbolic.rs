@@ -6,7 +6,7 @@ use anyhow::{bail, Context, Result};
 use statecheck_explicit::{Options, PropResult, Report, Stats, Verdict};
 use statecheck_ir::Program;
 use statecheck_symbolic::aig::Aig;
-use statecheck_symbolic::check::{decide, problems, Engine, SymResult};
+use statecheck_symbolic::check::{decide, problems, run_reduced, Engine, Reductions, SymResult};
 use statecheck_symbolic::engine::{Invariant, Limits, Outcome};
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::{mpsc, Arc};
@@ -54,6 +54,7 @@ pub struct Run {
 fn limits(timeout: Option<Duration>, depth: Option<u64>, stop: Option<Arc<AtomicBool>>) -> Limits {
     Limits {
         deadline: timeout.map(|t| Instant::now() + t),
+        attempt_deadline: None,
         max_depth: depth.map(|d| d as usize),
         stop,
     }
@@ -76,11 +77,12 @@ pub fn run_engine(p: &Program, opts: &Options, engine: Engine) -> Result<Run> {
         (_, d) => d,
     };
     let lim = limits(opts.timeout, depth, None);
+    let reductions = Reductions::new(bl.props.len());
     let mut results = Vec::new();
     let mut meta = Vec::new();
     let mut invariants = Vec::new();
     for &(pi, kind) in &idx {
-        let s = decide(p, &bl, pi, kind, engine, &lim);
+        let s = decide(p, &bl, pi, kind, engine, &lim, &reductions);
         meta.push(meta_of(engine.as_str(), &s));
         invariants.push(s.invariant.clone());
         results.push(s.result);
@@ -154,6 +156,7 @@ pub fn run_auto(p: &Program, opts: &Options) -> Result<Run> {
     let flags: Arc<Vec<Arc<AtomicBool>>> =
         Arc::new((0..n).map(|_| Arc::new(AtomicBool::new(false))).collect());
     let deadline = opts.timeout.map(|t| started + t);
+    let reductions = Arc::new(Reductions::new(bl.props.len()));
     let mut workers = Vec::new();
     for engine in SYMBOLIC_RACE {
         let tx = tx.clone();
@@ -163,6 +166,7 @@ pub fn run_auto(p: &Program, opts: &Options) -> Result<Run> {
         let flags = Arc::clone(&flags);
         let depth = opts.depth.map(|d| d as usize);
         let stop = Arc::clone(&stop);
+        let reductions = Arc::clone(&reductions);
         workers.push(std::thread::spawn(move || {
             // Passes with growing budgets per property, so that one hard property does not
             // starve the easy ones behind it; the last pass runs to the deadline.
@@ -180,14 +184,12 @@ pub fn run_auto(p: &Program, opts: &Options) -> Result<Run> {
                     }
                     let until = budget.map(|b| Instant::now() + b);
                     let lim = Limits {
-                        deadline: match (deadline, until) {
-                            (Some(d), Some(u)) => Some(d.min(u)),
-                            (d, u) => d.or(u),
-                        },
+                        deadline,
+                        attempt_deadline: until,
                         max_depth: depth,
                         stop: Some(Arc::clone(&flags[i])),
                     };
-                    let s = decide(&p, &bl, pi, kind, engine, &lim);
+                    let s = decide(&p, &bl, pi, kind, engine, &lim, &reductions);
                     if last || definitive(&s.result) {
                         let _ = tx.send(Msg::Symbolic(i, engine.as_str(), Box::new(s)));
                     }
@@ -459,7 +461,10 @@ pub fn run_aiger(a: &AigerRun) -> Result<u8> {
         let out = if matches!(a.engine, EngineArg::Auto | EngineArg::Explicit) {
             race(&g, &lim)
         } else {
-            (engine.run(&g, &lim), engine.as_str())
+            (
+                run_reduced(engine, &g, 0, &Reductions::new(1), &lim),
+                engine.as_str(),
+            )
         };
         let time = t.elapsed().as_secs_f64();
         let (verdict, depth, reason) = match &out.0 {
@@ -531,13 +536,15 @@ fn race(g: &Aig, lim: &Limits) -> (Outcome, &'static str) {
     let stop = Arc::new(AtomicBool::new(false));
     let mut l = lim.clone();
     l.stop = Some(Arc::clone(&stop));
+    let reductions = Reductions::new(1);
     std::thread::scope(|s| {
         let (tx, rx) = mpsc::channel();
         for e in SYMBOLIC_RACE {
             let tx = tx.clone();
             let l = l.clone();
+            let reductions = &reductions;
             s.spawn(move || {
-                let _ = tx.send((e.run(g, &l), e.as_str()));
+                let _ = tx.send((run_reduced(e, g, 0, reductions, &l), e.as_str()));
             });
         }
         drop(tx);
