@@ -297,5 +297,5 @@ pub(crate) fn decides(m: &mut Machine, check: Check) -> bool {
 
 /// True when `e` evaluates to non-zero (false when its evaluation fails).
 fn holds(m: &mut Machine, e: ExprId) -> bool {
-    matches!(m.eval(e), Ok(v) if v != 0)
+    matches!(statecheck_ir::eval(&m.program().nodes, m.slots(), e), Ok(v) if v != 0)
 }

@@ -155,7 +155,7 @@ impl Packer {
     fn unpack_u64(&self, packed: u64, state: &mut [i64]) {
         for (f, v) in self.fields.iter().zip(state.iter_mut()) {
             *v =
-                f.lo.wrapping_add(((packed >> (f.offset & 63)) & mask(f.width)) as i64);
+                f.lo.wrapping_add(((packed >> (f.offset & 63)) & f.mask) as i64);
         }
     }
 
