@@ -8,8 +8,13 @@
 //! exploration; the first violation found of each is a shortest one. Counterexamples are
 //! returned as the input vectors of each tick, ready for `statecheck_sim::scenario`.
 //!
+//! Properties that read only the state are checked once per newly found state (while it is
+//! inserted), the others on every transition; `assume` conjuncts are solved up front (inputs
+//! only), per state (state only) or per transition ([`InputSpace`]).
+//!
 //! To keep the visited set small (no parent pointers), a counterexample is rebuilt after the
-//! exploration by a second search, with parent links, up to the depth of the deepest violation.
+//! exploration by a second search, with parent links, up to the depth of the deepest violation,
+//! within what is left of the time budget.
 
 mod enumerate;
 mod expand;
@@ -198,8 +203,9 @@ pub struct Stats {
     pub table_bytes: u64,
     /// Input vectors per tick before `assume`s (saturating).
     pub branching: u128,
-    /// Input vectors per tick allowed by the `assume`s, when they read only inputs (then they
-    /// are solved once, up front).
+    /// Input vectors per tick allowed by the `assume` conjuncts that read only inputs (solved
+    /// once, up front), when there are some; the others are evaluated per state or per
+    /// transition.
     pub branching_after_assumes: Option<u128>,
     /// Worker threads.
     pub threads: usize,

@@ -2,9 +2,10 @@
 //!
 //! Each layer is processed in blocks of a fixed size: the block's states are expanded in
 //! parallel chunks (rayon), then every shard of the visited set inserts its successors in
-//! parallel, in generation order. Block, chunk and shard sizes depend only on the model, never
-//! on the thread count, so the states found, their order, and every result are the same on any
-//! number of threads.
+//! parallel, in generation order, and checks the per-state properties on the states that are
+//! new (the first violating one of a shard in generation order; the earliest over all shards
+//! wins). Block, chunk and shard sizes depend only on the model, never on the thread count, so
+//! the states found, their order, and every result are the same on any number of threads.
 
 use crate::expand::{Cand, ChunkOut, Expander, Found, StateCheck, StateFind};
 use crate::pack::Key;
