@@ -187,6 +187,10 @@ impl Expander<'_> {
                     });
                 }
                 let succ: K = self.packer.pack(m.state(), words);
+                // A self-loop leads to a state already visited (the source): nothing to insert.
+                if succ == *t.key {
+                    return;
+                }
                 out.buckets[shard_of(succ.hash64())].push(Cand {
                     key: succ,
                     parent: t.pos,
