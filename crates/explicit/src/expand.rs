@@ -290,8 +290,10 @@ impl<'a, 'p> StateCheck<'a, 'p> {
 /// property — exactly the simulator's reading: an expression whose evaluation fails is false.
 pub(crate) fn decides(m: &mut Machine, check: Check) -> bool {
     match check {
+        // The invariant first: it usually holds, and then `assuming` need not be evaluated
+        // (both are pure, so the order does not change the answer).
         Check::Invariant { expr, assuming } => {
-            assuming.is_none_or(|a| holds(m, a)) && !holds(m, expr)
+            !holds(m, expr) && assuming.is_none_or(|a| holds(m, a))
         }
         Check::Reachable { expr } => holds(m, expr),
         Check::Ok { ok } => !holds(m, ok),
