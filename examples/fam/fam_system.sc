@@ -691,8 +691,8 @@ chart Tie {
 //  - OTF, CCF (handled like HSL: cleared only once the cause is gone, by the general
 //    solution) and power loss (CPF: like EPM) are tied low: with them the closed loop has
 //    4.4 million states at depth 42 and is not exhausted in 600 s (docs/case-studies/fam.md);
-//  - at most one fault per tick (no assume reads the state: with one that does, the explicit
-//    engine no longer pre-filters the input-only assumes, see docs/case-studies/fam.md);
+//  - at most one fault per tick (an input-only assume: the explicit engine solves it once,
+//    up front, whatever the other assumes read);
 //  - no failed position save (DPR): it moves the FAM to 0x800, two thousand positions from
 //    the (scaled) flap range (the FAM alone covers DPR);
 //  - positions of the master's procedures scaled down by 10 (see parts/master.part);
@@ -735,7 +735,7 @@ system FamSystem {
   connect tie.k0 -> port.sna;
   connect tie.k0 -> ctrl.myId;
   assume ctrl.ccm == 0 || ctrl.ccm == 500 || ctrl.ccm == 1000;
-  // (written out: an assume that is a call of a declared fn is not pre-filtered, see fam.md)
+  // (written out as a sum; a call of a declared fn would be solved up front just the same)
   assume b(fam.stallNow) + b(fam.hslFault) + b(fam.epmFault) + b(fam.fbfFault)
          + b(bus.corrupt) + b(ctrl.corrupt) <= 1;
 

@@ -1,6 +1,7 @@
 //! Expanding a chunk of states: every input vector that satisfies the `assume`s, one tick of
-//! the IR each, properties checked on every transition, successors packed and bucketed by
-//! shard.
+//! the IR each, the per-transition properties checked on every transition, successors packed
+//! and bucketed by shard. Properties decided by the successor state alone are checked later,
+//! once per new state ([`StateCheck`]).
 
 use crate::inputs::InputSpace;
 use crate::pack::{Key, Packer};
@@ -8,13 +9,12 @@ use crate::props::{Check, Spec};
 use crate::table::{shard_of, SHARDS};
 use statecheck_ir::{ExprId, Machine, Program, RuntimeError};
 
-/// A successor found while expanding: its key and hash, and how it was reached.
+/// A successor found while expanding: its key and how it was reached.
 pub(crate) struct Cand<K> {
     pub key: K,
-    pub hash: u64,
     /// Position of the parent in its layer.
     pub parent: u32,
-    /// Index of the input vector.
+    /// Position of the input vector in the enumeration.
     pub input: u32,
 }
 
@@ -24,7 +24,7 @@ pub(crate) struct Found<K> {
     pub prop: usize,
     /// The source state.
     pub parent: K,
-    /// Index of the input vector.
+    /// Position of the input vector.
     pub input: u32,
     /// The run-time error, for built-in properties.
     pub error: Option<RuntimeError>,
@@ -52,50 +52,87 @@ pub(crate) struct Expander<'a> {
 }
 
 impl Expander<'_> {
+    /// True when some still-pending property is checked per state.
+    pub fn checks_states(&self, pending: &[bool]) -> bool {
+        self.specs
+            .iter()
+            .zip(pending)
+            .any(|(s, p)| *p && s.per_state)
+    }
+
     /// Expand `states`, the first of which sits at position `first_pos` of its layer;
     /// `pending[i]` tells whether property `i` is still undecided.
     pub fn chunk<K: Key>(&self, states: &[K], first_pos: usize, pending: &[bool]) -> ChunkOut<K> {
         let p = self.program;
+        let sp = self.space;
         let mut m = Machine::new(p);
         if self.coverage {
             m.enable_coverage();
         }
         let mut state = vec![0i64; p.n_state];
         let mut words = vec![0u64; self.packer.words];
-        let mut inp = vec![0i64; self.space.slots.len()];
-        let mut open: Vec<bool> = pending.to_vec();
+        let mut inp = vec![0i64; sp.slots.len()];
+        // Only the per-transition properties; the others are checked per new state.
+        let mut open = Open::new(self.specs, pending);
+        // Room for every successor, spread evenly over the shards, plus some slack.
+        let per_shard =
+            (states.len() as u128 * sp.per_tick() / SHARDS as u128 * 5 / 4).min(1 << 16) as usize;
         let mut out = ChunkOut {
-            buckets: (0..SHARDS).map(|_| Vec::new()).collect(),
+            buckets: (0..SHARDS)
+                .map(|_| Vec::with_capacity(per_shard + 4))
+                .collect(),
             found: Vec::new(),
             transitions: 0,
             coverage: None,
         };
-        let count = self.space.count as u64;
+        let n = sp.slots.len();
+        // Assumes evaluated on every transition: all of them when the vectors are not listed.
+        let mut per_tick: Vec<ExprId> = sp.mixed_assumes.clone();
+        if sp.listed().is_none() {
+            per_tick.extend(&sp.input_assumes);
+        }
         for (j, key) in states.iter().enumerate() {
-            let pos = first_pos + j;
+            let pos = (first_pos + j) as u32;
             self.packer.unpack(key, &mut words, &mut state);
-            match &self.space.allowed {
-                Some(allowed) => {
-                    for (idx, v) in allowed {
+            if !sp.state_assumes.is_empty() {
+                m.load_state(&state);
+                if !sp.state_assumes.iter().all(|a| holds(&mut m, *a)) {
+                    continue;
+                }
+            }
+            match sp.listed() {
+                Some((flat, count)) => {
+                    for idx in 0..count {
                         m.load_state(&state);
-                        for (k, &s) in self.space.slots.iter().enumerate() {
-                            m.set(s, v[k]);
+                        let v = &flat[idx * n..idx * n + n];
+                        for (&s, &x) in sp.slots.iter().zip(v) {
+                            m.set(s, x);
                         }
-                        self.transition(&mut m, key, pos, *idx, &mut open, &mut words, &mut out);
+                        if per_tick.iter().all(|a| holds(&mut m, *a)) {
+                            let t = Tick {
+                                key,
+                                pos,
+                                input: idx as u32,
+                            };
+                            self.transition(&mut m, t, &mut open, &mut words, &mut out);
+                        }
                     }
                 }
                 None => {
-                    self.space.first(&mut inp);
-                    for idx in 0..count {
+                    sp.first(&mut inp);
+                    for idx in 0..sp.count as u64 {
                         m.load_state(&state);
-                        for (k, &s) in self.space.slots.iter().enumerate() {
-                            m.set(s, inp[k]);
+                        for (&s, &x) in sp.slots.iter().zip(&inp) {
+                            m.set(s, x);
                         }
-                        self.space.advance(&mut inp);
-                        if p.assumes.iter().all(|a| holds(&mut m, *a)) {
-                            self.transition(
-                                &mut m, key, pos, idx as u32, &mut open, &mut words, &mut out,
-                            );
+                        sp.advance(&mut inp);
+                        if per_tick.iter().all(|a| holds(&mut m, *a)) {
+                            let t = Tick {
+                                key,
+                                pos,
+                                input: idx as u32,
+                            };
+                            self.transition(&mut m, t, &mut open, &mut words, &mut out);
                         }
                     }
                 }
@@ -107,14 +144,11 @@ impl Expander<'_> {
 
     /// One tick from the loaded state with the inputs set: record what it decides and the
     /// successor.
-    #[allow(clippy::too_many_arguments)] // reason: the per-chunk scratch buffers of the hot loop
     fn transition<K: Key>(
         &self,
         m: &mut Machine,
-        key: &K,
-        pos: usize,
-        idx: u32,
-        open: &mut [bool],
+        t: Tick<'_, K>,
+        open: &mut Open,
         words: &mut [u64],
         out: &mut ChunkOut<K>,
     ) {
@@ -126,36 +160,127 @@ impl Expander<'_> {
                     .specs
                     .iter()
                     .position(|s| matches!(s.check, Check::Builtin(b) if b == name));
-                if let Some(i) = hit.filter(|i| open[*i]) {
-                    open[i] = false;
+                if let Some(i) = hit.filter(|i| open.builtin[*i]) {
+                    open.builtin[i] = false;
                     out.found.push(Found {
                         prop: i,
-                        parent: key.clone(),
-                        input: idx,
+                        parent: t.key.clone(),
+                        input: t.input,
                         error: Some(e),
                     });
                 }
             }
             Ok(()) => {
-                for (i, spec) in self.specs.iter().enumerate() {
-                    if open[i] && decides(m, spec.check) {
-                        open[i] = false;
-                        out.found.push(Found {
-                            prop: i,
-                            parent: key.clone(),
-                            input: idx,
-                            error: None,
-                        });
-                    }
+                if !open.watch.is_empty() {
+                    let specs = self.specs;
+                    open.watch.retain(|&i| {
+                        let hit = decides(m, specs[i].check);
+                        if hit {
+                            out.found.push(Found {
+                                prop: i,
+                                parent: t.key.clone(),
+                                input: t.input,
+                                error: None,
+                            });
+                        }
+                        !hit
+                    });
                 }
                 let succ: K = self.packer.pack(m.state(), words);
-                let hash = succ.hash64();
-                out.buckets[shard_of(hash)].push(Cand {
+                // A self-loop leads to a state already visited (the source): nothing to insert.
+                if succ == *t.key {
+                    return;
+                }
+                out.buckets[shard_of(succ.hash64())].push(Cand {
                     key: succ,
-                    hash,
-                    parent: pos as u32,
-                    input: idx,
+                    parent: t.pos,
+                    input: t.input,
                 });
+            }
+        }
+    }
+}
+
+/// The properties a chunk still checks on every transition.
+struct Open {
+    /// Per property: a still-pending built-in (decided by a run-time error of the tick).
+    builtin: Vec<bool>,
+    /// Still-pending properties evaluated after every tick, in declaration order.
+    watch: Vec<usize>,
+}
+
+impl Open {
+    fn new(specs: &[Spec], pending: &[bool]) -> Open {
+        let tick = |(s, p): (&Spec, &bool)| *p && !s.per_state;
+        Open {
+            builtin: specs
+                .iter()
+                .zip(pending)
+                .map(|sp| tick(sp) && matches!(sp.0.check, Check::Builtin(_)))
+                .collect(),
+            watch: specs
+                .iter()
+                .zip(pending)
+                .enumerate()
+                .filter(|(_, sp)| tick(*sp) && !matches!(sp.0.check, Check::Builtin(_)))
+                .map(|(i, _)| i)
+                .collect(),
+        }
+    }
+}
+
+/// The transition being taken: the source state, its position, the input position.
+struct Tick<'k, K> {
+    key: &'k K,
+    pos: u32,
+    input: u32,
+}
+
+/// A new state deciding a per-state property: the property, the parent's position in its
+/// layer, and the input position of the transition that found the state.
+pub(crate) type StateFind = (usize, u32, u32);
+
+/// Checks the per-state properties on newly found states (one per shard task).
+pub(crate) struct StateCheck<'a, 'p> {
+    exp: &'a Expander<'p>,
+    m: Machine<'p>,
+    state: Vec<i64>,
+    words: Vec<u64>,
+    open: Vec<bool>,
+    /// The first new state (in generation order) deciding each property.
+    pub found: Vec<StateFind>,
+}
+
+impl<'a, 'p> StateCheck<'a, 'p> {
+    /// A checker for the still-pending per-state properties.
+    pub fn new(exp: &'a Expander<'p>, pending: &[bool]) -> Self {
+        StateCheck {
+            exp,
+            m: Machine::new(exp.program),
+            state: vec![0; exp.program.n_state],
+            words: vec![0; exp.packer.words],
+            open: pending
+                .iter()
+                .zip(exp.specs)
+                .map(|(p, s)| *p && s.per_state)
+                .collect(),
+            found: Vec::new(),
+        }
+    }
+
+    /// Check a new state reached by `c`.
+    pub fn check<K: Key>(&mut self, c: &Cand<K>) {
+        if !self.open.iter().any(|o| *o) {
+            return;
+        }
+        self.exp
+            .packer
+            .unpack(&c.key, &mut self.words, &mut self.state);
+        self.m.load_state(&self.state);
+        for (i, spec) in self.exp.specs.iter().enumerate() {
+            if self.open[i] && decides(&mut self.m, spec.check) {
+                self.open[i] = false;
+                self.found.push((i, c.parent, c.input));
             }
         }
     }
@@ -163,10 +288,12 @@ impl Expander<'_> {
 
 /// True when the machine's state after a tick violates (or, for `reachable`, witnesses) the
 /// property — exactly the simulator's reading: an expression whose evaluation fails is false.
-fn decides(m: &mut Machine, check: Check) -> bool {
+pub(crate) fn decides(m: &mut Machine, check: Check) -> bool {
     match check {
+        // The invariant first: it usually holds, and then `assuming` need not be evaluated
+        // (both are pure, so the order does not change the answer).
         Check::Invariant { expr, assuming } => {
-            assuming.is_none_or(|a| holds(m, a)) && !holds(m, expr)
+            !holds(m, expr) && assuming.is_none_or(|a| holds(m, a))
         }
         Check::Reachable { expr } => holds(m, expr),
         Check::Ok { ok } => !holds(m, ok),
@@ -176,5 +303,5 @@ fn decides(m: &mut Machine, check: Check) -> bool {
 
 /// True when `e` evaluates to non-zero (false when its evaluation fails).
 fn holds(m: &mut Machine, e: ExprId) -> bool {
-    matches!(m.eval(e), Ok(v) if v != 0)
+    matches!(statecheck_ir::eval(&m.program().nodes, m.slots(), e), Ok(v) if v != 0)
 }

@@ -1,10 +1,25 @@
-//! The input vectors of one tick, enumerated in a fixed order so that an index identifies a
-//! vector: mixed radix over [`Program::inputs`], the first input varying fastest.
+//! The input vectors of one tick, enumerated in a fixed order so that a position identifies a
+//! vector, and the `assume`s that restrict them.
+//!
+//! The raw space is mixed radix over [`Program::inputs`], the first input varying fastest.
+//! Every `assume` is split into its `&&` conjuncts, and each conjunct is classified by what it
+//! reads: inputs only (solved once, up front: the allowed vectors are listed, see
+//! [`crate::enumerate`]), state only (evaluated once per state), or both (evaluated on every
+//! transition). When the vectors are listed, a transition's input position is its index in
+//! the list; otherwise it is the raw mixed-radix index.
 
-use statecheck_ir::{ExprId, Machine, Node, Program, SlotId};
+use crate::enumerate::{allowed, Budget};
+use crate::reads::{conjuncts, input_slots, reads_only, state_slots};
+use statecheck_ir::{ExprId, Program, SlotId};
 
-/// Most input vectors [`InputSpace::solve_static`] enumerates up front.
+/// Most vectors [`InputSpace::solve_static`] lists up front.
 pub const MAX_STATIC_ENUMERATION: u128 = 1 << 20;
+
+/// Most values (vectors × inputs) a listing may hold: 32 MiB.
+const MAX_LISTED_VALUES: usize = 1 << 22;
+
+/// Most partial assignments the enumeration visits before giving up.
+const MAX_ENUMERATION_NODES: u64 = 1 << 23;
 
 /// The space of input vectors of a program.
 #[derive(Clone, Debug)]
@@ -13,15 +28,26 @@ pub struct InputSpace {
     pub slots: Vec<SlotId>,
     lo: Vec<i64>,
     hi: Vec<i64>,
-    /// Number of vectors (saturating at `u128::MAX`).
+    /// Number of vectors before `assume`s (saturating at `u128::MAX`).
     pub count: u128,
-    /// When every `assume` reads only inputs: the vectors they allow, as (index, values),
-    /// computed once instead of in every state.
-    pub allowed: Option<Vec<(u32, Vec<i64>)>>,
+    /// `assume` conjuncts that read only inputs: solved up front when the vectors are listed,
+    /// otherwise evaluated on every transition.
+    pub input_assumes: Vec<ExprId>,
+    /// `assume` conjuncts that read only the state: evaluated once per state (a state where one
+    /// fails has no successor).
+    pub state_assumes: Vec<ExprId>,
+    /// `assume` conjuncts that read the state and the inputs: evaluated on every transition.
+    pub mixed_assumes: Vec<ExprId>,
+    /// The vectors of a tick, listed up front: flat, `slots.len()` values each.
+    listed: Option<Vec<i64>>,
+    /// How many vectors are listed.
+    n_listed: usize,
+    /// True when the input-only assumes allow too many vectors to list.
+    pub too_many: bool,
 }
 
 impl InputSpace {
-    /// The input space of `program`, before `assume`s.
+    /// The input space of `program`, its assumes classified, nothing listed yet.
     pub fn new(program: &Program) -> InputSpace {
         let mut count: u128 = 1;
         let mut slots = Vec::new();
@@ -35,52 +61,98 @@ impl InputSpace {
             lo.push(s.lo);
             hi.push(s.hi);
         }
+        let mut parts = Vec::new();
+        for &a in &program.assumes {
+            conjuncts(program, a, &mut parts);
+        }
+        let (mut input_assumes, mut state_assumes, mut mixed_assumes) =
+            (Vec::new(), Vec::new(), Vec::new());
+        for c in parts {
+            if reads_only(program, c, input_slots(program)) {
+                input_assumes.push(c);
+            } else if reads_only(program, c, state_slots(program)) {
+                state_assumes.push(c);
+            } else {
+                mixed_assumes.push(c);
+            }
+        }
         InputSpace {
             slots,
             lo,
             hi,
             count,
-            allowed: None,
+            input_assumes,
+            state_assumes,
+            mixed_assumes,
+            listed: None,
+            n_listed: 0,
+            too_many: false,
         }
     }
 
-    /// If there are `assume`s, they all read only input slots, and the space is small enough,
-    /// enumerate the allowed vectors once (see [`InputSpace::allowed`]). Returns true when it did.
+    /// List the vectors of a tick up front: those the input-only assumes allow, or, without
+    /// such assumes, all of them when they are few. Returns true when it did.
     pub fn solve_static(&mut self, program: &Program) -> bool {
-        let lo = program.n_state as u32;
-        let hi = lo + program.inputs.len() as u32;
-        if program.assumes.is_empty()
-            || self.count > MAX_STATIC_ENUMERATION
-            || !program
-                .assumes
-                .iter()
-                .all(|a| reads_only(program, *a, lo, hi))
-        {
-            return false;
-        }
-        let mut m = Machine::new(program);
-        let mut v = self.lo.clone();
-        let mut allowed = Vec::new();
-        for idx in 0..self.count as u32 {
-            for (k, &s) in self.slots.iter().enumerate() {
-                m.set(s, v[k]);
+        let n = self.slots.len().max(1);
+        if self.input_assumes.is_empty() {
+            let small = self.count <= MAX_STATIC_ENUMERATION
+                && (self.count as usize).saturating_mul(n) <= MAX_LISTED_VALUES;
+            if !small {
+                return false;
             }
-            if program
-                .assumes
-                .iter()
-                .all(|a| matches!(m.eval(*a), Ok(x) if x != 0))
-            {
-                allowed.push((idx, v.clone()));
+            let mut flat = Vec::with_capacity(self.count as usize * self.slots.len());
+            let mut v = self.lo.clone();
+            for _ in 0..self.count {
+                flat.extend_from_slice(&v);
+                self.advance(&mut v);
             }
-            self.advance(&mut v);
+            self.listed = Some(flat);
+            self.n_listed = self.count as usize;
+            return true;
         }
-        self.allowed = Some(allowed);
-        true
+        let bounds: Vec<(i64, i64)> = self
+            .lo
+            .iter()
+            .copied()
+            .zip(self.hi.iter().copied())
+            .collect();
+        let budget = Budget {
+            vectors: MAX_STATIC_ENUMERATION as usize,
+            values: MAX_LISTED_VALUES,
+            nodes: MAX_ENUMERATION_NODES,
+        };
+        match allowed(program, &self.slots, &bounds, &self.input_assumes, budget) {
+            Some((flat, n_listed)) => {
+                self.listed = Some(flat);
+                self.n_listed = n_listed;
+                // Solved: no longer evaluated per transition.
+                true
+            }
+            None => {
+                self.too_many = true;
+                false
+            }
+        }
     }
 
-    /// Input vectors per tick after the `assume`s, when known up front.
+    /// Input vectors per tick allowed by the input-only assumes, when there are some and they
+    /// were solved up front.
     pub fn effective(&self) -> Option<u128> {
-        self.allowed.as_ref().map(|a| a.len() as u128)
+        (!self.input_assumes.is_empty() && self.listed.is_some()).then_some(self.n_listed as u128)
+    }
+
+    /// The listed vectors, flat (`slots.len()` values each), and how many there are.
+    pub fn listed(&self) -> Option<(&[i64], usize)> {
+        self.listed.as_deref().map(|l| (l, self.n_listed))
+    }
+
+    /// Input vectors per tick the engine will enumerate: the listed ones, or the raw space.
+    pub fn per_tick(&self) -> u128 {
+        if self.listed.is_some() {
+            self.n_listed as u128
+        } else {
+            self.count
+        }
     }
 
     /// The first vector (every input at its lowest value).
@@ -88,7 +160,7 @@ impl InputSpace {
         out.copy_from_slice(&self.lo);
     }
 
-    /// Advance `v` to the next vector in enumeration order (wrapping after the last).
+    /// Advance `v` to the next vector in raw enumeration order (wrapping after the last).
     pub fn advance(&self, v: &mut [i64]) {
         for (k, x) in v.iter_mut().enumerate() {
             if *x < self.hi[k] {
@@ -99,7 +171,20 @@ impl InputSpace {
         }
     }
 
-    /// The vector with index `idx`.
+    /// The vector at position `pos` of the enumeration (of the listing when there is one).
+    pub fn vector(&self, pos: u128) -> Vec<i64> {
+        let n = self.slots.len();
+        match &self.listed {
+            Some(flat) => {
+                let i = usize::try_from(pos).unwrap_or(usize::MAX);
+                flat.get(i.saturating_mul(n)..i.saturating_mul(n).saturating_add(n))
+                    .map_or_else(|| self.lo.clone(), <[i64]>::to_vec)
+            }
+            None => self.decode(pos),
+        }
+    }
+
+    /// The vector with raw index `idx`.
     pub fn decode(&self, mut idx: u128) -> Vec<i64> {
         self.lo
             .iter()
@@ -114,29 +199,6 @@ impl InputSpace {
     }
 }
 
-/// True when expression `e` reads no slot outside `lo..hi` (unknown node kinds count as
-/// reading anything).
-fn reads_only(p: &Program, e: ExprId, lo: u32, hi: u32) -> bool {
-    let mut stack = vec![e];
-    while let Some(e) = stack.pop() {
-        match p.nodes.get(e as usize) {
-            Some(Node::Const(_)) => {}
-            Some(Node::Slot(s)) => {
-                if *s < lo || *s >= hi {
-                    return false;
-                }
-            }
-            Some(Node::Unary(_, a) | Node::Abs(a, _) | Node::Check(a, _, _, _)) => stack.push(*a),
-            Some(Node::Binary(_, a, b, _) | Node::Min(a, b) | Node::Max(a, b)) => {
-                stack.extend([*a, *b])
-            }
-            Some(Node::Ite(c, a, b)) => stack.extend([*c, *a, *b]),
-            _ => return false,
-        }
-    }
-    true
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -148,7 +210,12 @@ mod tests {
             lo: vec![0, -1, 3],
             hi: vec![1, 1, 4],
             count: 12,
-            allowed: None,
+            input_assumes: Vec::new(),
+            state_assumes: Vec::new(),
+            mixed_assumes: Vec::new(),
+            listed: None,
+            n_listed: 0,
+            too_many: false,
         };
         let mut v = vec![0; 3];
         sp.first(&mut v);

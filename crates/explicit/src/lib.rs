@@ -8,13 +8,21 @@
 //! exploration; the first violation found of each is a shortest one. Counterexamples are
 //! returned as the input vectors of each tick, ready for `statecheck_sim::scenario`.
 //!
+//! Properties that read only the state are checked once per newly found state (while it is
+//! inserted), the others on every transition; `assume` conjuncts are solved up front (inputs
+//! only), per state (state only) or per transition ([`InputSpace`]).
+//!
 //! To keep the visited set small (no parent pointers), a counterexample is rebuilt after the
-//! exploration by a second search, with parent links, up to the depth of the deepest violation.
+//! exploration by a second search, with parent links, up to the depth of the deepest violation,
+//! within what is left of the time budget.
 
+mod enumerate;
 mod expand;
 mod inputs;
+mod interval;
 pub mod pack;
 pub mod props;
+mod reads;
 mod search;
 pub mod table;
 mod trace;
@@ -103,7 +111,7 @@ impl Limit {
             Limit::States(n) => format!("state limit of {n} reached"),
             Limit::Time(t) => format!("time limit of {:.1} s reached", t.as_secs_f64()),
             Limit::Branching { branching, max } => format!(
-                "branching factor {branching} exceeds {max} input vectors per tick; not explored"
+                "branching factor {branching} exceeds {max} input vectors per tick; not explored (constrain the inputs with `assume`, or use --engine ic3)"
             ),
         }
     }
@@ -195,8 +203,9 @@ pub struct Stats {
     pub table_bytes: u64,
     /// Input vectors per tick before `assume`s (saturating).
     pub branching: u128,
-    /// Input vectors per tick allowed by the `assume`s, when they read only inputs (then they
-    /// are solved once, up front).
+    /// Input vectors per tick allowed by the `assume` conjuncts that read only inputs (solved
+    /// once, up front), when there are some; the others are evaluated per state or per
+    /// transition.
     pub branching_after_assumes: Option<u128>,
     /// Worker threads.
     pub threads: usize,
@@ -257,7 +266,10 @@ pub fn verify(
     opts: &Options,
     progress: Option<&(dyn Fn(&Progress) + Sync)>,
 ) -> Result<Report, String> {
-    let specs = props::select(program, &opts.properties)?;
+    let start = std::time::Instant::now();
+    let mut specs = props::select(program, &opts.properties)?;
+    let mut init = statecheck_ir::Machine::new(program);
+    props::mark_per_state(program, &mut specs, |c| expand::decides(&mut init, c));
     let mut space = InputSpace::new(program);
     space.solve_static(program);
     let packer = Packer::new(program);
@@ -273,9 +285,9 @@ pub fn verify(
         state_bits: packer.bits,
         ..Stats::default()
     };
-    let branching = space.effective().unwrap_or(space.count);
+    let branching = space.per_tick();
     let too_wide =
-        space.count > u128::from(u32::MAX) || (branching > opts.max_branching && !opts.force);
+        branching > u128::from(u32::MAX) || (branching > opts.max_branching && !opts.force);
     if too_wide {
         let limit = Limit::Branching {
             branching,
@@ -313,19 +325,21 @@ pub fn verify(
     };
     let report = pool.install(|| {
         if packer.bits <= 63 {
-            run::<u64>(&exp, opts, stats, progress)
+            run::<u64>(&exp, opts, start, stats, progress)
         } else if packer.bits <= 127 {
-            run::<u128>(&exp, opts, stats, progress)
+            run::<u128>(&exp, opts, start, stats, progress)
         } else {
-            run::<Box<[u64]>>(&exp, opts, stats, progress)
+            run::<Box<[u64]>>(&exp, opts, start, stats, progress)
         }
     });
     Ok(report)
 }
 
+/// Explore, then rebuild the counterexamples; `--timeout` counts from `start` and bounds both.
 fn run<K: Key>(
     exp: &Expander,
     opts: &Options,
+    start: std::time::Instant,
     mut stats: Stats,
     progress: Option<&(dyn Fn(&Progress) + Sync)>,
 ) -> Report {
@@ -357,7 +371,9 @@ fn run<K: Key>(
         });
     }
     let cex_start = std::time::Instant::now();
-    let traces = trace::rebuild::<K>(exp, &s.found, opts.max_memory);
+    // What is left of the time budget bounds the reconstruction too.
+    let budget = opts.timeout.map(|t| t.saturating_sub(start.elapsed()));
+    let traces = trace::rebuild::<K>(exp, &s.found, opts.max_memory, budget);
     stats.cex_time = cex_start.elapsed();
     let results = exp
         .specs

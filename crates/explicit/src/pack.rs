@@ -13,12 +13,26 @@ struct Field {
     lo: i64,
     width: u32,
     offset: u32,
+    /// `width` low bits set.
+    mask: u64,
+}
+
+/// A field of non-zero width, for the integer fast path.
+#[derive(Clone, Copy, Debug)]
+struct Live {
+    /// Index of the slot in the state.
+    slot: u32,
+    lo: i64,
+    offset: u32,
+    mask: u64,
 }
 
 /// Packs and unpacks the persistent state of a program.
 #[derive(Clone, Debug)]
 pub struct Packer {
     fields: Vec<Field>,
+    /// The fields of non-zero width (constant slots need no bits and no work when packing).
+    live: Vec<Live>,
     /// Total bits of a packed vector.
     pub bits: u32,
     /// 64-bit words of a packed vector.
@@ -37,15 +51,32 @@ impl Packer {
                     lo: s.lo,
                     width: s.width(),
                     offset,
+                    mask: mask(s.width()),
                 };
                 offset += f.width;
                 f
             })
             .collect();
+        Packer::with_fields(fields, offset)
+    }
+
+    fn with_fields(fields: Vec<Field>, bits: u32) -> Packer {
+        let live = fields
+            .iter()
+            .enumerate()
+            .filter(|(_, f)| f.width > 0)
+            .map(|(i, f)| Live {
+                slot: i as u32,
+                lo: f.lo,
+                offset: f.offset,
+                mask: f.mask,
+            })
+            .collect();
         Packer {
             fields,
-            bits: offset,
-            words: (offset as usize).div_ceil(64).max(1),
+            live,
+            bits,
+            words: (bits as usize).div_ceil(64).max(1),
         }
     }
 
@@ -84,18 +115,61 @@ impl Packer {
     }
 
     /// Pack a state into a key.
+    #[inline]
     pub fn pack<K: Key>(&self, state: &[i64], scratch: &mut [u64]) -> K {
-        self.pack_words(state, scratch);
-        K::from_words(scratch)
+        K::pack(self, state, scratch)
     }
 
     /// Unpack a key into a state.
+    #[inline]
     pub fn unpack<K: Key>(&self, key: &K, scratch: &mut [u64], state: &mut [i64]) {
-        key.to_words(scratch);
-        self.unpack_words(scratch, state);
+        key.unpack(self, scratch, state);
+    }
+
+    /// Pack a state of at most 128 bits straight into an integer (no word buffer): the hot
+    /// path of the integer keys. Fields are in slot order, so the loop is branch-free.
+    #[inline]
+    fn pack_u128(&self, state: &[i64]) -> u128 {
+        let mut acc = 0u128;
+        for f in &self.live {
+            let v = state.get(f.slot as usize).copied().unwrap_or(f.lo);
+            acc |= u128::from(v.wrapping_sub(f.lo) as u64 & f.mask) << (f.offset & 127);
+        }
+        acc
+    }
+
+    /// Pack a state of at most 64 bits straight into an integer.
+    #[inline]
+    fn pack_u64(&self, state: &[i64]) -> u64 {
+        let mut acc = 0u64;
+        for f in &self.live {
+            let v = state.get(f.slot as usize).copied().unwrap_or(f.lo);
+            // Used for vectors of at most 63 bits: every live field starts below bit 63.
+            acc |= (v.wrapping_sub(f.lo) as u64 & f.mask) << (f.offset & 63);
+        }
+        acc
+    }
+
+    /// Unpack a vector of at most 64 bits.
+    #[inline]
+    fn unpack_u64(&self, packed: u64, state: &mut [i64]) {
+        for (f, v) in self.fields.iter().zip(state.iter_mut()) {
+            *v =
+                f.lo.wrapping_add(((packed >> (f.offset & 63)) & f.mask) as i64);
+        }
+    }
+
+    /// Unpack a vector of at most 128 bits.
+    #[inline]
+    fn unpack_u128(&self, packed: u128, state: &mut [i64]) {
+        for (f, v) in self.fields.iter().zip(state.iter_mut()) {
+            let x = (packed >> (f.offset & 127)) as u64 & f.mask;
+            *v = f.lo.wrapping_add(x as i64);
+        }
     }
 }
 
+#[inline]
 fn mask(width: u32) -> u64 {
     if width >= 64 {
         u64::MAX
@@ -118,6 +192,16 @@ pub trait Key: Clone + Eq + Send + Sync + 'static {
     fn is_empty(&self) -> bool;
     /// Bytes held outside the table slot (for boxed keys).
     fn heap_bytes(&self) -> usize;
+    /// Pack `state` with `packer` (`scratch` holds `packer.words` words).
+    fn pack(packer: &Packer, state: &[i64], scratch: &mut [u64]) -> Self {
+        packer.pack_words(state, scratch);
+        Self::from_words(scratch)
+    }
+    /// Unpack into `state` with `packer`.
+    fn unpack(&self, packer: &Packer, scratch: &mut [u64], state: &mut [i64]) {
+        self.to_words(scratch);
+        packer.unpack_words(scratch, state);
+    }
 }
 
 /// MurmurHash3's 64-bit finaliser.
@@ -149,6 +233,14 @@ impl Key for u64 {
     fn heap_bytes(&self) -> usize {
         0
     }
+    #[inline]
+    fn pack(packer: &Packer, state: &[i64], _: &mut [u64]) -> Self {
+        packer.pack_u64(state) + 1
+    }
+    #[inline]
+    fn unpack(&self, packer: &Packer, _: &mut [u64], state: &mut [i64]) {
+        packer.unpack_u64(self - 1, state);
+    }
 }
 
 impl Key for u128 {
@@ -174,6 +266,14 @@ impl Key for u128 {
     }
     fn heap_bytes(&self) -> usize {
         0
+    }
+    #[inline]
+    fn pack(packer: &Packer, state: &[i64], _: &mut [u64]) -> Self {
+        packer.pack_u128(state) + 1
+    }
+    #[inline]
+    fn unpack(&self, packer: &Packer, _: &mut [u64], state: &mut [i64]) {
+        packer.unpack_u128(self - 1, state);
     }
 }
 
@@ -208,16 +308,17 @@ mod tests {
             .iter()
             .map(|&(lo, hi)| {
                 let width = 64 - (hi.wrapping_sub(lo) as u64).leading_zeros();
-                let f = Field { lo, width, offset };
+                let f = Field {
+                    lo,
+                    width,
+                    offset,
+                    mask: mask(width),
+                };
                 offset += width;
                 f
             })
             .collect();
-        Packer {
-            fields,
-            bits: offset,
-            words: (offset as usize).div_ceil(64).max(1),
-        }
+        Packer::with_fields(fields, offset)
     }
 
     #[test]
@@ -236,6 +337,43 @@ mod tests {
         let mut back = [0i64; 6];
         p.unpack(&k, &mut words, &mut back);
         assert_eq!(back, state);
+    }
+
+    #[test]
+    fn integer_fast_paths_agree_with_the_word_packing() {
+        // Constant slots (width 0) in between, fields up to the last bit of each key width.
+        for ranges in [
+            vec![
+                (-3, 4),
+                (7, 7),
+                (0, 1),
+                (-100, 100),
+                (5, 5),
+                (0, (1 << 50) - 1),
+            ],
+            vec![
+                (0, (1 << 40) - 1),
+                (9, 9),
+                (-1, (1 << 40) - 2),
+                (0, (1 << 40) - 1),
+            ],
+        ] {
+            let p = packer(&ranges);
+            let mut words = vec![0; p.words];
+            let state: Vec<i64> = ranges.iter().map(|&(lo, hi)| hi - (hi - lo) / 3).collect();
+            p.pack_words(&state, &mut words);
+            let mut back = vec![0i64; ranges.len()];
+            if p.bits <= 63 {
+                let k: u64 = p.pack(&state, &mut words);
+                assert_eq!(k - 1, words[0]);
+                p.unpack(&k, &mut words, &mut back);
+            } else {
+                let k: u128 = p.pack(&state, &mut words);
+                assert_eq!(k - 1, u128::from(words[0]) | (u128::from(words[1]) << 64));
+                p.unpack(&k, &mut words, &mut back);
+            }
+            assert_eq!(back, state);
+        }
     }
 
     #[test]

@@ -50,6 +50,18 @@ pub(crate) enum Check {
     Builtin(&'static str),
 }
 
+impl Check {
+    /// The expressions it evaluates.
+    fn exprs(self) -> Vec<ExprId> {
+        match self {
+            Check::Invariant { expr, assuming } => std::iter::once(expr).chain(assuming).collect(),
+            Check::Reachable { expr } => vec![expr],
+            Check::Ok { ok } => vec![ok],
+            Check::Builtin(_) => Vec::new(),
+        }
+    }
+}
+
 /// A property to check.
 #[derive(Clone, Debug)]
 pub struct Spec {
@@ -58,6 +70,32 @@ pub struct Spec {
     /// Its kind.
     pub kind: PropKind,
     pub(crate) check: Check,
+    /// Decided by the state after the tick alone, so checked once per new state instead of on
+    /// every transition (see [`mark_per_state`]).
+    pub(crate) per_state: bool,
+}
+
+/// Mark the properties that can be checked once per newly found state instead of on every
+/// transition: those whose expressions read only persistent state slots (so their value
+/// after a tick is a function of the successor state), unless the initial state decides them
+/// (the initial state is stored before any tick, so a transition back to it would not be
+/// checked again). `init_decides` tells whether the initial state decides a check.
+///
+/// Same verdicts and counterexamples: a violating transition leads to a violating state; the
+/// first time that state is found, in generation order, is the first such transition.
+pub(crate) fn mark_per_state(
+    program: &Program,
+    specs: &mut [Spec],
+    mut init_decides: impl FnMut(Check) -> bool,
+) {
+    for s in specs {
+        let exprs = s.check.exprs();
+        s.per_state = !exprs.is_empty()
+            && exprs
+                .iter()
+                .all(|&e| crate::reads::reads_only(program, e, crate::reads::state_slots(program)))
+            && !init_decides(s.check);
+    }
 }
 
 /// Every property of a program: its own in declaration order, then the built-ins.
@@ -84,6 +122,7 @@ pub fn all(program: &Program) -> Vec<Spec> {
                 name: p.name.clone(),
                 kind,
                 check,
+                per_state: false,
             }
         })
         .collect();
@@ -91,6 +130,7 @@ pub fn all(program: &Program) -> Vec<Spec> {
         name: (*b).to_string(),
         kind: PropKind::Builtin,
         check: Check::Builtin(b),
+        per_state: false,
     }));
     out
 }

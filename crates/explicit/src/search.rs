@@ -2,11 +2,12 @@
 //!
 //! Each layer is processed in blocks of a fixed size: the block's states are expanded in
 //! parallel chunks (rayon), then every shard of the visited set inserts its successors in
-//! parallel, in generation order. Block, chunk and shard sizes depend only on the model, never
-//! on the thread count, so the states found, their order, and every result are the same on any
-//! number of threads.
+//! parallel, in generation order, and checks the per-state properties on the states that are
+//! new (the first violating one of a shard in generation order; the earliest over all shards
+//! wins). Block, chunk and shard sizes depend only on the model, never on the thread count, so
+//! the states found, their order, and every result are the same on any number of threads.
 
-use crate::expand::{Cand, ChunkOut, Expander, Found};
+use crate::expand::{Cand, ChunkOut, Expander, Found, StateCheck, StateFind};
 use crate::pack::Key;
 use crate::table::{Visited, SHARDS};
 use crate::{Limit, Progress};
@@ -86,7 +87,7 @@ pub(crate) fn search<K: Key>(
     let mut transitions = 0u64;
     let mut depth = 0u64;
     let mut peak = 0u64;
-    let branching = u64::try_from(exp.space.effective().unwrap_or(exp.space.count))
+    let branching = u64::try_from(exp.space.per_tick())
         .unwrap_or(u64::MAX)
         .max(1);
     let chunk = (4096 / branching).clamp(1, 512) as usize;
@@ -134,19 +135,49 @@ pub(crate) fn search<K: Key>(
                     per_shard[s].push(bucket);
                 }
             }
-            let new: Vec<Vec<Cand<K>>> = visited
+            let check_states = exp.checks_states(&pending);
+            let new: Vec<(Vec<Cand<K>>, Vec<StateFind>)> = visited
                 .shards
                 .par_iter_mut()
                 .zip(per_shard)
                 .map(|(shard, buckets)| {
-                    buckets
-                        .into_iter()
-                        .flatten()
-                        .filter(|c| shard.insert(&c.key, c.hash))
-                        .collect()
+                    let mut checker = check_states.then(|| StateCheck::new(exp, &pending));
+                    let mut fresh = Vec::new();
+                    for c in buckets.into_iter().flatten() {
+                        if shard.insert(&c.key, c.key.hash64()) {
+                            if let Some(ch) = checker.as_mut() {
+                                ch.check(&c);
+                            }
+                            fresh.push(c);
+                        }
+                    }
+                    (fresh, checker.map(|c| c.found).unwrap_or_default())
                 })
                 .collect();
-            for c in new.into_iter().flatten() {
+            // Per-state findings: the first in generation order over all shards.
+            let mut first: Vec<Option<(u32, u32)>> = vec![None; n_props];
+            for (_, f) in &new {
+                for &(i, parent, input) in f {
+                    if first[i].is_none_or(|b| (parent, input) < b) {
+                        first[i] = Some((parent, input));
+                    }
+                }
+            }
+            for (i, f) in first.into_iter().enumerate() {
+                if let Some((parent, input)) = f.filter(|_| pending[i]) {
+                    pending[i] = false;
+                    found[i] = Some((
+                        depth,
+                        Found {
+                            prop: i,
+                            parent: frontier[parent as usize].clone(),
+                            input,
+                            error: None,
+                        },
+                    ));
+                }
+            }
+            for c in new.into_iter().flat_map(|(fresh, _)| fresh) {
                 next.push(c.key);
                 if tracking {
                     next_parents.push((c.parent, c.input));

@@ -5,18 +5,25 @@
 //! The layers of a breadth-first search are sets fixed by the model, so the source state of a
 //! transition found in layer `d` of the exploration is in layer `d` of this search, and the
 //! walk back gives a shortest path to it.
+//!
+//! The reconstruction gets what is left of the run's time budget: when it runs out, the
+//! findings stand (the exploration found them) but their counterexamples are reported missing,
+//! with the reason.
 
 use crate::expand::{Expander, Found};
 use crate::pack::Key;
 use crate::search::{search, End, Limits};
 use crate::Limit;
+use std::time::Duration;
 
 /// For each property: the input vectors of a shortest counterexample, when one was found and
-/// could be rebuilt (`Err` says why not). Properties without a finding get `Err("")`.
+/// could be rebuilt within `max_memory` and the time `budget` (`Err` says why not). Properties
+/// without a finding get `Err("")`.
 pub(crate) fn rebuild<K: Key>(
     exp: &Expander,
     found: &[Option<(u64, Found<K>)>],
     max_memory: Option<u64>,
+    budget: Option<Duration>,
 ) -> Vec<Result<Vec<Vec<i64>>, String>> {
     let Some(deepest) = found.iter().flatten().map(|(d, _)| *d).max() else {
         return found.iter().map(|_| Err(String::new())).collect();
@@ -28,14 +35,31 @@ pub(crate) fn rebuild<K: Key>(
         specs: &[],
         coverage: false,
     };
+    if deepest > 0 && budget.is_some_and(|b| b.is_zero()) {
+        let why = "counterexample not rebuilt: the time limit was used up by the exploration";
+        return found
+            .iter()
+            .map(|f| {
+                Err(if f.is_some() {
+                    why.into()
+                } else {
+                    String::new()
+                })
+            })
+            .collect();
+    }
     let limits = Limits {
         max_memory,
+        timeout: budget,
         ..Limits::default()
     };
     let s = search::<K>(&plain, limits, Some(deepest), None);
     let failed = match &s.end {
         End::Limit(l @ Limit::Memory(_)) => {
             Some(format!("counterexample not rebuilt: {}", l.describe()))
+        }
+        End::Limit(Limit::Time(_)) => {
+            Some("counterexample not rebuilt: the time limit ran out while rebuilding it".into())
         }
         _ => None,
     };
@@ -61,7 +85,57 @@ pub(crate) fn rebuild<K: Key>(
                 pos = parent as usize;
             }
             inputs.reverse();
-            Ok(inputs.into_iter().map(|i| exp.space.decode(i)).collect())
+            Ok(inputs.into_iter().map(|i| exp.space.vector(i)).collect())
         })
         .collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::inputs::InputSpace;
+    use crate::pack::Packer;
+
+    /// A counter that one event increments; the invariant fails when it reaches 5.
+    fn program() -> statecheck_ir::Program {
+        let text = "chart C {\n  input event inc;\n  output c: int[0..9] = 0;\n  initial S;\n  state S {\n    on inc [c < 9] / { c += 1; };\n  }\n}\nsystem Sys {\n  instance k: C;\n  invariant small: k.c < 5;\n}\n";
+        let (file, _) = statecheck_syntax::parse(text);
+        let (model, diags) = statecheck_model::check(&file);
+        assert!(!diags.iter().any(|d| d.is_error()), "{diags:?}");
+        let sys = model.system("Sys").expect("system");
+        statecheck_ir::lower(&model, sys).expect("lowers")
+    }
+
+    #[test]
+    fn the_time_budget_bounds_reconstruction() {
+        let p = program();
+        let packer = Packer::new(&p);
+        let mut space = InputSpace::new(&p);
+        space.solve_static(&p);
+        let mut specs = crate::props::all(&p);
+        let mut init = statecheck_ir::Machine::new(&p);
+        crate::props::mark_per_state(&p, &mut specs, |c| crate::expand::decides(&mut init, c));
+        let exp = Expander {
+            program: &p,
+            packer: &packer,
+            space: &space,
+            specs: &specs,
+            coverage: false,
+        };
+        let s = search::<u64>(&exp, Limits::default(), None, None);
+        // Tick 0 starts the chart; ticks 1..5 increment: c == 5 after tick 5, the 6th tick,
+        // taken from a state of layer 5.
+        assert_eq!(s.found[0].as_ref().map(|f| f.0), Some(5));
+        let ok = rebuild::<u64>(&exp, &s.found, None, None);
+        assert_eq!(ok[0].as_ref().map(Vec::len), Ok(6));
+        // No time left after the exploration: nothing is searched, the reason is given.
+        let none = rebuild::<u64>(&exp, &s.found, None, Some(Duration::ZERO));
+        let why = none[0].as_ref().err().cloned().unwrap_or_default();
+        assert!(why.contains("time limit"), "{why}");
+        // A budget smaller than any block of the search: it stops after the first block
+        // (layer 0) instead of going on to layer 5.
+        let short = rebuild::<u64>(&exp, &s.found, None, Some(Duration::from_nanos(1)));
+        let why = short[0].as_ref().err().cloned().unwrap_or_default();
+        assert!(why.contains("time limit"), "{why}");
+    }
 }

@@ -152,6 +152,8 @@ fn collect_globals(file: &ast::File, g: &mut Globals, diags: &mut Vec<Diagnostic
     };
     let mut chart_count = 0;
     let mut tick_seen: Option<Span> = None;
+    // Each literal name: where it is first declared, and by which enum.
+    let mut literals: HashMap<String, (Span, String)> = HashMap::new();
     for item in &file.items {
         match item {
             ast::Item::Enum(e) => {
@@ -173,6 +175,9 @@ fn collect_globals(file: &ast::File, g: &mut Globals, diags: &mut Vec<Diagnostic
                         );
                     }
                     g.literal_owners.entry(v.name.clone()).or_default().push(id);
+                    literals
+                        .entry(v.name.clone())
+                        .or_insert((v.span, e.name.name.clone()));
                 }
                 if e.variants.is_empty() {
                     diags.push(Diagnostic::error(
@@ -219,6 +224,35 @@ fn collect_globals(file: &ast::File, g: &mut Globals, diags: &mut Vec<Diagnostic
                 tick_seen = Some(t.span);
             }
         }
+    }
+    const_literal_clashes(file, &literals, diags);
+}
+
+/// A constant named like an enum literal: a bare use of the name could mean either, so it is a
+/// duplicate declaration (E0102) wherever the two are declared, whichever comes first.
+fn const_literal_clashes(
+    file: &ast::File,
+    literals: &HashMap<String, (Span, String)>,
+    diags: &mut Vec<Diagnostic>,
+) {
+    for item in &file.items {
+        let ast::Item::Const(c) = item else { continue };
+        let Some((lit_span, owner)) = literals.get(&c.name.name) else {
+            continue;
+        };
+        let name = &c.name.name;
+        diags.push(
+            Diagnostic::error(
+                "E0102",
+                format!("constant `{name}` has the same name as a literal of enum `{owner}`"),
+                c.name.span,
+            )
+            .with_label("clashes with an enum literal")
+            .with_secondary(*lit_span, "literal declared here")
+            .with_hint(format!(
+                "rename the constant: a bare `{name}` would be ambiguous (`{owner}.{name}` names the literal)"
+            )),
+        );
     }
 }
 

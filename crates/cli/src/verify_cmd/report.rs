@@ -20,6 +20,7 @@ pub fn announce_branching(p: &Program, opts: &Options, quiet: bool) {
     let n = space.effective().unwrap_or(space.count);
     let after = match space.effective() {
         Some(e) if e != space.count => format!(" ({e} allowed by the assumes)"),
+        _ if space.too_many => " (too many allowed by the assumes to list)".to_string(),
         _ => String::new(),
     };
     if !quiet {
@@ -27,7 +28,7 @@ pub fn announce_branching(p: &Program, opts: &Options, quiet: bool) {
     }
     if n > opts.max_branching && !opts.force {
         eprintln!(
-            "error: {n} input vectors per tick is too many to enumerate in every state; constrain the inputs with `assume` (e.g. `assume fam.targetPos == 0 || fam.targetPos == 4095;`), or use --force to explore anyway"
+            "error: {n} input vectors per tick is too many to enumerate in every state; constrain the inputs with `assume` (e.g. `assume fam.targetPos == 0 || fam.targetPos == 4095;`), use --engine ic3, or use --force to explore anyway"
         );
     } else if n > LARGE_BRANCHING && !quiet {
         eprintln!("warning: {n} input vectors per tick make every state expensive; consider `assume` constraints on the widest inputs");
