@@ -75,6 +75,8 @@ pub(super) struct Compiled {
     pub tables: Vec<u32>,
     pub bounds: Vec<(i64, i64)>,
     pub init_regs: Vec<i64>,
+    /// The first constant register (the constants are never written).
+    pub const_base: u32,
     pub step: u32,
     pub exprs: HashMap<ExprId, (u32, Reg)>,
 }
@@ -84,6 +86,12 @@ struct Compiler<'p> {
     iv: Intervals<'p>,
     /// Whether each node contains a `Let` (evaluating it rebinds a local).
     has_let: Vec<bool>,
+    /// Whether each node reads no local and binds none: its value depends only on the slots,
+    /// which do not change while one statement's expression is evaluated.
+    slots_only: Vec<bool>,
+    /// Values already computed into temporaries on every path to the current instruction (in
+    /// the current statement, since the last jump target).
+    avail: HashMap<ExprId, Reg>,
     ops: Vec<Op>,
     sites: Vec<SiteId>,
     tables: Vec<u32>,
@@ -127,10 +135,26 @@ pub(super) fn compile(p: &Program) -> Option<Compiled> {
             Node::Ite(c, a, b) => has_let[c as usize] || has_let[a as usize] || has_let[b as usize],
         };
     }
+    let mut slots_only = vec![false; p.nodes.len()];
+    for (i, n) in p.nodes.iter().enumerate() {
+        slots_only[i] = match *n {
+            Node::Let(..) | Node::Local(_) => false,
+            Node::Const(_) | Node::Slot(_) => true,
+            Node::Unary(_, a) | Node::Abs(a, _) | Node::Check(a, ..) => slots_only[a as usize],
+            Node::Binary(_, a, b, _) | Node::Min(a, b) | Node::Max(a, b) => {
+                slots_only[a as usize] && slots_only[b as usize]
+            }
+            Node::Ite(c, a, b) => {
+                slots_only[c as usize] && slots_only[a as usize] && slots_only[b as usize]
+            }
+        };
+    }
     let mut c = Compiler {
         p,
         iv: Intervals::new(&p.nodes),
         has_let,
+        slots_only,
+        avail: HashMap::new(),
         ops: Vec::new(),
         sites: Vec::new(),
         tables: Vec::new(),
@@ -173,6 +197,7 @@ pub(super) fn compile(p: &Program) -> Option<Compiled> {
         }
         let start = c.here();
         c.next_temp = 0;
+        c.avail.clear();
         let reg = c.expr(e);
         c.emit(Op::End);
         exprs.insert(e, (start, reg));
@@ -204,6 +229,7 @@ pub(super) fn compile(p: &Program) -> Option<Compiled> {
         tables: c.tables,
         bounds: c.bounds,
         init_regs,
+        const_base,
         step,
         exprs,
     })
@@ -330,16 +356,20 @@ impl Compiler<'_> {
         self.ops.len() - 1
     }
 
+    /// Point the jump at `at` to `target`, always the current position: a jump target, where
+    /// values computed before are no longer known to be available.
     fn patch(&mut self, at: usize, target: u32) {
         if let Some(t) = self.ops[at].target_mut() {
             *t = target;
         }
+        self.avail.clear();
     }
 
     fn patch_all(&mut self, list: Vec<usize>, target: u32) {
         for at in list {
             self.patch(at, target);
         }
+        self.avail.clear();
     }
 
     /// The register of a constant. While compiling, constants are numbered down from
@@ -402,6 +432,7 @@ impl Compiler<'_> {
     fn block(&mut self, stmts: &[Stmt]) {
         for s in stmts {
             self.next_temp = 0;
+            self.avail.clear();
             match s {
                 Stmt::Assign { slot, expr, site } => {
                     let sl = &self.p.slots[*slot as usize];
@@ -448,6 +479,7 @@ impl Compiler<'_> {
                     let mut jumps = Vec::new();
                     for (k, case) in cases.iter().enumerate() {
                         self.tables[table + 2 + k] = self.here();
+                        self.avail.clear();
                         self.block(case);
                         jumps.push(self.emit_jump(Op::Jmp { t: 0 }));
                     }
@@ -596,8 +628,25 @@ impl Compiler<'_> {
     }
 
     /// Compile an expression, writing its value into `want` when that saves a move: only when
-    /// the destination is written by the last instruction, after all operands are read.
+    /// the destination is written by the last instruction, after all operands are read. A value
+    /// computed earlier in the statement on every path to here is reused (it cannot have
+    /// failed: the statement would have ended).
     fn expr_into(&mut self, e: ExprId, want: Option<Reg>) -> Reg {
+        if self.is_leaf(e) || !self.slots_only[e as usize] {
+            return self.compute(e, want);
+        }
+        if let Some(r) = self.avail.get(&e) {
+            return *r;
+        }
+        let r = self.compute(e, want);
+        if (self.temps_base..Reg::MAX as u32 / 2).contains(&(r as u32)) {
+            self.avail.insert(e, r);
+        }
+        r
+    }
+
+    /// [`Self::expr_into`] without reuse.
+    fn compute(&mut self, e: ExprId, want: Option<Reg>) -> Reg {
         match *self.node(e) {
             Node::Const(v) => self.konst(v),
             Node::Slot(s) => s as Reg,

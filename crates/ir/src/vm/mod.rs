@@ -10,9 +10,11 @@
 //! - `compile.rs`: the translation;
 //! - `interval.rs`: value intervals, to drop range checks that cannot fail;
 //! - `peephole.rs`: jump threading and removal of useless jumps;
+//! - `constprop.rs`: branches on registers of known value;
 //! - `run.rs`: the instruction loop.
 
 mod compile;
+mod constprop;
 mod interval;
 mod op;
 mod peephole;
@@ -67,6 +69,10 @@ impl Code {
         match compile::compile(p) {
             Some(mut c) => {
                 peephole::optimise(&mut c);
+                // Each round turns at least one conditional jump into a `Jmp`: it terminates.
+                while constprop::fold_branches(&mut c) {
+                    peephole::optimise(&mut c);
+                }
                 let n = c.ops.len().next_power_of_two();
                 c.ops.resize(n, Op::End);
                 c.sites.resize(n, u32::MAX);

@@ -127,7 +127,7 @@ pub(crate) enum Op {
 }
 
 impl Op {
-    /// Apply `f` to every register operand (sources and destination).
+    /// Apply `f` to every register operand (the destination first, then the sources).
     pub(crate) fn for_each_reg(&mut self, mut f: impl FnMut(&mut Reg)) {
         use Op::*;
         match self {
@@ -194,6 +194,33 @@ impl Op {
                 f(b);
             }
             Jmp { .. } | Call { .. } | Ret | Cover { .. } | End => {}
+        }
+    }
+
+    /// The register the instruction writes, if any.
+    pub(crate) fn dest(&self) -> Option<Reg> {
+        let mut op = *self;
+        let mut first = None;
+        // `for_each_reg` visits the destination first.
+        op.for_each_reg(|r| {
+            first.get_or_insert(*r);
+        });
+        match self {
+            Op::Check { .. }
+            | Op::Jz { .. }
+            | Op::Jnz { .. }
+            | Op::JEq { .. }
+            | Op::JNe { .. }
+            | Op::JLt { .. }
+            | Op::JLe { .. }
+            | Op::JEqI { .. }
+            | Op::JNeI { .. }
+            | Op::JLtI { .. }
+            | Op::JLeI { .. }
+            | Op::JGtI { .. }
+            | Op::JGeI { .. }
+            | Op::Switch { .. } => None,
+            _ => first,
         }
     }
 

@@ -193,7 +193,7 @@ impl Gen {
     }
 
     fn block(&mut self, depth: u32, proc_: Option<u32>) -> Vec<Stmt> {
-        let n = self.rng.below(5);
+        let n = self.rng.below(7);
         (0..n).map(|_| self.stmt(depth, proc_)).collect()
     }
 
@@ -202,12 +202,23 @@ impl Gen {
         match choice {
             0..=4 => {
                 let slot = self.rng.below(self.n_slots as usize) as u32;
-                let expr = self.expr(3);
+                // Small constants often: flags that later statements test.
+                let expr = if self.rng.chance(30) {
+                    let v = self.rng.range(0, 2);
+                    self.push(Node::Const(v))
+                } else {
+                    self.expr(3)
+                };
                 let site = self.rng.chance(60).then(|| self.site());
                 Stmt::Assign { slot, expr, site }
             }
             5 | 6 => Stmt::If {
-                cond: self.expr(3),
+                cond: if self.rng.chance(30) {
+                    let s = self.rng.below(self.n_slots as usize) as u32;
+                    self.push(Node::Slot(s))
+                } else {
+                    self.expr(3)
+                },
                 then: self.block(depth - 1, proc_),
                 otherwise: if self.rng.chance(50) {
                     self.block(depth - 1, proc_)
@@ -334,9 +345,15 @@ fn random_program(seed: u64) -> Program {
 fn register_code_matches_the_reference_evaluator_on_random_programs() {
     let mut errors = 0;
     let mut ticks = 0;
+    let mut calls = 0;
     for seed in 1..=3000u64 {
         let p = random_program(seed);
         assert!(p.code().runnable);
+        calls += p
+            .code()
+            .ops
+            .iter()
+            .any(|op| matches!(op, super::Op::Call { .. })) as u32;
         let mut fast = Machine::new(&p);
         let mut slow = Machine::new(&p);
         fast.enable_coverage();
@@ -378,4 +395,79 @@ fn register_code_matches_the_reference_evaluator_on_random_programs() {
         errors > 500 && ticks > 50_000,
         "{errors} errors in {ticks} ticks"
     );
+    // And calls that are not inlined.
+    assert!(calls > 300, "{calls} programs with calls");
+}
+
+/// A program over `n` integer slots (the last one an input) with the given code.
+fn handmade(n: u32, nodes: Vec<Node>, procs: Vec<Vec<Stmt>>, step: Vec<Stmt>) -> Program {
+    let mut p = random_program(1);
+    p.slots.truncate(1);
+    p.slots.resize(n as usize, p.slots[0].clone());
+    for (i, s) in p.slots.iter_mut().enumerate() {
+        (s.lo, s.hi, s.init) = (0, 9, 0);
+        s.name = format!("s{i}");
+    }
+    p.n_state = n as usize - 1;
+    p.inputs.truncate(1);
+    p.inputs[0].slot = n - 1;
+    p.nodes = nodes;
+    p.procs = procs
+        .into_iter()
+        .enumerate()
+        .map(|(k, body)| Proc {
+            name: format!("p{k}"),
+            body,
+        })
+        .collect();
+    p.step = step;
+    p.properties.clear();
+    p
+}
+
+/// A flag set before a call and tested after it is not known after the call: the callee may
+/// change it (here when the input is 1).
+#[test]
+fn a_call_forgets_known_register_values() {
+    let assign = |slot, expr| Stmt::Assign {
+        slot,
+        expr,
+        site: None,
+    };
+    // Nodes: 0 = const 0, 1 = const 1, 2 = slot 0 (the flag), 3 = slot 2 (the input).
+    let nodes = vec![Node::Const(0), Node::Const(1), Node::Slot(0), Node::Slot(2)];
+    // Called twice and not small: not inlined.
+    let proc_ = vec![
+        Stmt::If {
+            cond: 3,
+            then: vec![assign(0, 1)],
+            otherwise: Vec::new(),
+        },
+        Stmt::Cover(0),
+        Stmt::Cover(1),
+        Stmt::Cover(2),
+        Stmt::Cover(3),
+    ];
+    let step = vec![
+        assign(0, 0),
+        Stmt::Call(0),
+        Stmt::If {
+            cond: 2,
+            then: vec![assign(1, 1)],
+            otherwise: Vec::new(),
+        },
+        Stmt::Call(0),
+    ];
+    let p = handmade(3, nodes, vec![proc_], step);
+    assert!(p
+        .code()
+        .ops
+        .iter()
+        .any(|op| matches!(op, super::Op::Call { .. })));
+    for input in [0, 1] {
+        let mut m = Machine::new(&p);
+        m.set(2, input);
+        m.step().expect("no error");
+        assert_eq!(m.get(1), input, "input {input}");
+    }
 }
