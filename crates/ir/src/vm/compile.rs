@@ -797,6 +797,45 @@ impl Compiler<'_> {
         d
     }
 
+    /// The leaf-select operand of `a | b`: `(c, x, y)` of `if c then x else y`, when `a` or
+    /// `b` is one whose value is not already available; `Some(true)` when it is `b`.
+    fn select_operand(&self, a: ExprId, b: ExprId) -> Option<(bool, ExprId, ExprId, ExprId)> {
+        let leaf_ite = |e: ExprId| match *self.node(e) {
+            Node::Ite(c, x, y) if self.is_leaf(x) && self.is_leaf(y) => {
+                (!self.avail.contains_key(&e)).then_some((c, x, y))
+            }
+            _ => None,
+        };
+        if let Some((c, x, y)) = leaf_ite(b) {
+            Some((true, c, x, y))
+        } else {
+            leaf_ite(a).map(|(c, x, y)| (false, c, x, y))
+        }
+    }
+
+    /// `a | (if c then x else y)` (or the mirror image) over leaves `x`, `y`, as one
+    /// [`Op::OrSel`]: the idiom that packs booleans into a flag register. Operands are
+    /// evaluated in the tree evaluator's order.
+    fn or_select(&mut self, a: ExprId, b: ExprId, want: Option<Reg>) -> Option<Reg> {
+        let (sel_is_b, c, x, y) = self.select_operand(a, b)?;
+        let (other, c) = if sel_is_b {
+            self.operands(a, c)
+        } else {
+            let (c, other) = self.operands(c, b);
+            (other, c)
+        };
+        let (x, y) = (self.expr(x), self.expr(y));
+        let d = self.dest(want);
+        self.emit(Op::OrSel {
+            d,
+            a: other,
+            c,
+            x,
+            y,
+        });
+        Some(d)
+    }
+
     /// Arithmetic and bitwise operators (not comparisons, not `&&`/`||`).
     fn binary(&mut self, op: BinOp, a: ExprId, b: ExprId, site: SiteId, want: Option<Reg>) -> Reg {
         // A constant operand becomes an immediate (either side of a commutative operator).
@@ -810,6 +849,11 @@ impl Compiler<'_> {
             (Some(k), None) if commutative => Some((b, k)),
             _ => None,
         };
+        if op == BinOp::BitOr && with_imm.is_none() {
+            if let Some(d) = self.or_select(a, b, want) {
+                return d;
+            }
+        }
         if let Some((x, imm)) = with_imm {
             let a = self.expr(x);
             let d = self.dest(want);

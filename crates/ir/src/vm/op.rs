@@ -83,6 +83,14 @@ pub(crate) enum Op {
     Abs { d: Reg, a: Reg },
     /// `d = if c != 0 { a } else { b }`, without a branch.
     Sel { d: Reg, c: Reg, a: Reg, b: Reg },
+    /// `d = a | (if c != 0 { x } else { y })`, without a branch.
+    OrSel {
+        d: Reg,
+        a: Reg,
+        c: Reg,
+        x: Reg,
+        y: Reg,
+    },
     /// Fail unless `lo <= a <= hi`, bounds in [`Code::bounds`](super::Code::bounds).
     Check { a: Reg, bounds: u32 },
     /// Fail unless `lo <= a <= hi`, then `d = a`.
@@ -173,6 +181,13 @@ impl Op {
                 f(a);
             }
             MovI { d, .. } => f(d),
+            OrSel { d, a, c, x, y } => {
+                f(d);
+                f(a);
+                f(c);
+                f(x);
+                f(y);
+            }
             Sel { d, c, a, b } => {
                 f(d);
                 f(c);

@@ -140,6 +140,10 @@ fn exec(
                 let (x, y) = (r!(a), r!(b));
                 r!(d) = if r!(c) != 0 { x } else { y };
             }
+            Op::OrSel { d, a, c, x, y } => {
+                let (v, x, y) = (r!(a), r!(x), r!(y));
+                r!(d) = v | if r!(c) != 0 { x } else { y };
+            }
             Op::Check { a, bounds } => {
                 let v = r!(a);
                 let (lo, hi) = code.bounds[bounds as usize];
