@@ -674,6 +674,11 @@ impl Compiler<'_> {
             Node::Binary(op @ (BinOp::And | BinOp::Or), a, b, _)
                 if total(&self.p.nodes, b) && size(&self.p.nodes, b, EAGER_SIZE) <= EAGER_SIZE =>
             {
+                if op == BinOp::And {
+                    if let Some(d) = self.and_test(a, b, want) {
+                        return d;
+                    }
+                }
                 let (a, b) = (self.expr(a), self.expr(b));
                 let d = self.dest(want);
                 self.emit(if op == BinOp::And {
@@ -764,6 +769,43 @@ impl Compiler<'_> {
                 }
             }
         }
+    }
+
+    /// `(x, k, equal)` when `e` is `x == k` or `x != k` (either way round) for a leaf `x` and
+    /// an immediate `k`, and its value is not already available.
+    fn leaf_test(&self, e: ExprId) -> Option<(ExprId, i32, bool)> {
+        let Node::Binary(op @ (BinOp::Eq | BinOp::Ne), a, b, _) = *self.node(e) else {
+            return None;
+        };
+        if self.avail.contains_key(&e) {
+            return None;
+        }
+        let (x, k) = match (self.imm_of(a), self.imm_of(b)) {
+            (_, Some(k)) => (a, k),
+            (Some(k), None) => (b, k),
+            (None, None) => return None,
+        };
+        self.is_leaf(x).then_some((x, k, op == BinOp::Eq))
+    }
+
+    /// `a && (x == k)` (or `!=`, either operand) as one instruction: a state test combined with
+    /// a flag. Both operands are total here (`b` by the caller's condition, the test because it
+    /// reads a leaf), so their order does not matter.
+    fn and_test(&mut self, a: ExprId, b: ExprId, want: Option<Reg>) -> Option<Reg> {
+        let (other, (x, imm, equal)) = match (self.leaf_test(b), self.leaf_test(a)) {
+            (Some(t), _) => (a, t),
+            (None, Some(t)) => (b, t),
+            (None, None) => return None,
+        };
+        let a = self.expr(other);
+        let b = self.expr(x);
+        let d = self.dest(want);
+        self.emit(if equal {
+            Op::LAndEqI { d, a, b, imm }
+        } else {
+            Op::LAndNeI { d, a, b, imm }
+        });
+        Some(d)
     }
 
     /// `a cmp b` as a 0/1 value.

@@ -49,6 +49,10 @@ pub(crate) enum Op {
     LAnd { d: Reg, a: Reg, b: Reg },
     /// `d = (a != 0 || b != 0)`, both operands already evaluated.
     LOr { d: Reg, a: Reg, b: Reg },
+    /// `d = (a != 0 && b == imm)`.
+    LAndEqI { d: Reg, a: Reg, b: Reg, imm: i32 },
+    /// `d = (a != 0 && b != imm)`.
+    LAndNeI { d: Reg, a: Reg, b: Reg, imm: i32 },
     /// `d = a + imm`, overflow checked.
     AddI { d: Reg, a: Reg, imm: i32 },
     /// `d = a & imm`.
@@ -156,7 +160,9 @@ impl Op {
             | Lt { d, a, b }
             | Le { d, a, b }
             | LAnd { d, a, b }
-            | LOr { d, a, b } => {
+            | LOr { d, a, b }
+            | LAndEqI { d, a, b, .. }
+            | LAndNeI { d, a, b, .. } => {
                 f(d);
                 f(a);
                 f(b);

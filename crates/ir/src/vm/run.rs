@@ -120,6 +120,8 @@ fn exec(
             Op::Le { d, a, b } => r!(d) = (r!(a) <= r!(b)) as i64,
             Op::LAnd { d, a, b } => r!(d) = ((r!(a) != 0) & (r!(b) != 0)) as i64,
             Op::LOr { d, a, b } => r!(d) = ((r!(a) != 0) | (r!(b) != 0)) as i64,
+            Op::LAndEqI { d, a, b, imm } => r!(d) = ((r!(a) != 0) & (r!(b) == imm as i64)) as i64,
+            Op::LAndNeI { d, a, b, imm } => r!(d) = ((r!(a) != 0) & (r!(b) != imm as i64)) as i64,
             Op::AddI { d, a, imm } => r!(d) = checked!(r!(a).checked_add(imm as i64)),
             Op::AndI { d, a, imm } => r!(d) = r!(a) & imm as i64,
             Op::OrI { d, a, imm } => r!(d) = r!(a) | imm as i64,
