@@ -43,7 +43,7 @@ pub(crate) struct Code {
     /// False when the program has too many registers for [`Reg`]: the machine then runs the
     /// reference evaluator.
     pub runnable: bool,
-    /// The instructions, padded with `End` to a power-of-two length.
+    /// The instructions.
     pub ops: Vec<Op>,
     /// The run-time check site of each instruction (`u32::MAX` for those that cannot fail).
     pub sites: Vec<SiteId>,
@@ -51,8 +51,7 @@ pub(crate) struct Code {
     pub tables: Vec<u32>,
     /// Bounds of the range checks.
     pub bounds: Vec<(i64, i64)>,
-    /// Initial register file: slots' initial values, zeros, and the constants, padded with
-    /// zeros to a power-of-two length.
+    /// Initial register file: slots' initial values, zeros, and the constants.
     pub init_regs: Vec<i64>,
     /// Depth of the return stack the code needs.
     pub max_depth: usize,
@@ -73,11 +72,6 @@ impl Code {
                 while constprop::fold_branches(&mut c) {
                     peephole::optimise(&mut c);
                 }
-                let n = c.ops.len().next_power_of_two();
-                c.ops.resize(n, Op::End);
-                c.sites.resize(n, u32::MAX);
-                let n = c.init_regs.len().next_power_of_two();
-                c.init_regs.resize(n, 0);
                 let code = Code {
                     runnable: true,
                     ops: c.ops,
@@ -110,13 +104,12 @@ impl Code {
         }
     }
 
-    /// Assert the invariants the instruction loop relies on: power-of-two lengths of the code
-    /// and the register file, every register, target, table and bounds index in range, and
-    /// the code ending with `End` or `Ret`.
+    /// Assert the invariants that make the instruction loop's unchecked accesses sound (see
+    /// `run.rs`): every register operand, jump target, segment start, switch table entry and
+    /// bounds index in range, and the code ending with `End` or `Ret`.
     fn validate(&self) {
         let n_regs = self.init_regs.len();
         let n_ops = self.ops.len() as u32;
-        assert!(n_regs.is_power_of_two() && n_ops.is_power_of_two());
         assert_eq!(self.sites.len(), self.ops.len());
         assert!(self.step < n_ops);
         for seg in self.exprs.values() {
