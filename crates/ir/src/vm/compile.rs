@@ -469,23 +469,26 @@ impl Compiler<'_> {
                 }
                 Stmt::Switch { slot, cases } => {
                     let table = self.tables.len();
-                    self.tables.push(cases.len() as u32);
-                    self.tables.push(0);
-                    self.tables.extend(std::iter::repeat_n(0, cases.len()));
+                    self.tables.extend(std::iter::repeat_n(0, 1 + cases.len()));
+                    let Ok(len) = u16::try_from(cases.len()) else {
+                        self.too_big = true;
+                        continue;
+                    };
                     self.emit(Op::Switch {
                         a: *slot as Reg,
+                        len,
                         table: table as u32,
                     });
                     let mut jumps = Vec::new();
                     for (k, case) in cases.iter().enumerate() {
-                        self.tables[table + 2 + k] = self.here();
+                        self.tables[table + 1 + k] = self.here();
                         self.avail.clear();
                         self.block(case);
                         jumps.push(self.emit_jump(Op::Jmp { t: 0 }));
                     }
                     let end = self.here();
                     self.patch_all(jumps, end);
-                    self.tables[table + 1] = end;
+                    self.tables[table] = end;
                 }
                 Stmt::Call(id) => {
                     let body = &self.p.procs[*id as usize].body;
@@ -516,6 +519,26 @@ impl Compiler<'_> {
     /// Emit code that jumps (through `targets`, patched later) when `e` evaluates to `sense`
     /// and falls through otherwise.
     fn jump_when(&mut self, e: ExprId, sense: bool, targets: &mut Vec<usize>) {
+        if let Some((x, set)) = self.set_test(e) {
+            let a = self.expr(x);
+            let t = 0;
+            targets.push(self.emit_jump(if sense {
+                Op::JIn { a, set, t }
+            } else {
+                Op::JNotIn { a, set, t }
+            }));
+            return;
+        }
+        if let Some((x, imm, nonzero)) = self.bit_test(e) {
+            let a = self.expr(x);
+            let t = 0;
+            targets.push(self.emit_jump(if nonzero == sense {
+                Op::JAnyI { a, imm, t }
+            } else {
+                Op::JNoneI { a, imm, t }
+            }));
+            return;
+        }
         match *self.node(e) {
             // `a && b` is false as soon as one operand is, `a || b` true as soon as one is:
             // both operands jump to the same place.
@@ -671,6 +694,13 @@ impl Compiler<'_> {
                     d
                 }
             },
+            Node::Binary(BinOp::Or, ..) if self.set_test(e).is_some() => {
+                let (x, set) = self.set_test(e).unwrap_or((e, 0));
+                let a = self.expr(x);
+                let d = self.dest(want);
+                self.emit(Op::InSet { d, a, set });
+                d
+            }
             Node::Binary(op @ (BinOp::And | BinOp::Or), a, b, _)
                 if total(&self.p.nodes, b) && size(&self.p.nodes, b, EAGER_SIZE) <= EAGER_SIZE =>
             {
@@ -769,6 +799,77 @@ impl Compiler<'_> {
                 }
             }
         }
+    }
+
+    /// The slot or local a leaf reads, to tell whether two leaves are the same.
+    fn leaf_key(&self, e: ExprId) -> Option<(bool, u32)> {
+        match *self.node(e) {
+            Node::Slot(s) => Some((false, s)),
+            Node::Local(l) => Some((true, l)),
+            _ => None,
+        }
+    }
+
+    /// `(x, set)` when `e` is `x == k1 || x == k2 || ..` for one slot or local `x` and at least
+    /// two constants in `0..32` (an enumeration tested against several literals). The tests
+    /// are total, so one membership test computes the same value.
+    fn set_test(&self, e: ExprId) -> Option<(ExprId, u32)> {
+        fn walk(
+            c: &Compiler,
+            e: ExprId,
+            key: &mut Option<(bool, u32)>,
+            set: &mut u32,
+        ) -> Option<ExprId> {
+            match *c.node(e) {
+                Node::Binary(BinOp::Or, a, b, _) => {
+                    let x = walk(c, a, key, set)?;
+                    walk(c, b, key, set)?;
+                    Some(x)
+                }
+                Node::Binary(BinOp::Eq, a, b, _) => {
+                    let (x, k) = match (c.imm_of(a), c.imm_of(b)) {
+                        (_, Some(k)) => (a, k),
+                        (Some(k), None) => (b, k),
+                        (None, None) => return None,
+                    };
+                    let this = c.leaf_key(x)?;
+                    if *key.get_or_insert(this) != this || !(0..32).contains(&k) {
+                        return None;
+                    }
+                    *set |= 1 << k;
+                    Some(x)
+                }
+                _ => None,
+            }
+        }
+        if !matches!(self.node(e), Node::Binary(BinOp::Or, ..)) {
+            return None;
+        }
+        let (mut key, mut set) = (None, 0u32);
+        let x = walk(self, e, &mut key, &mut set)?;
+        (set.count_ones() >= 2).then_some((x, set))
+    }
+
+    /// `(x, k, nonzero)` when `e` is `(x & k) != 0` (`nonzero`) or `(x & k) == 0`, for an
+    /// immediate `k` (a flag register tested against a mask).
+    fn bit_test(&self, e: ExprId) -> Option<(ExprId, i32, bool)> {
+        let Node::Binary(op @ (BinOp::Eq | BinOp::Ne), a, b, _) = *self.node(e) else {
+            return None;
+        };
+        let masked = match (self.imm_of(a), self.imm_of(b)) {
+            (_, Some(0)) => a,
+            (Some(0), _) => b,
+            _ => return None,
+        };
+        let Node::Binary(BinOp::BitAnd, x, y, _) = *self.node(masked) else {
+            return None;
+        };
+        let (x, k) = match (self.imm_of(x), self.imm_of(y)) {
+            (_, Some(k)) => (x, k),
+            (Some(k), None) => (y, k),
+            (None, None) => return None,
+        };
+        Some((x, k, op == BinOp::Ne))
     }
 
     /// `(x, k, equal)` when `e` is `x == k` or `x != k` (either way round) for a leaf `x` and

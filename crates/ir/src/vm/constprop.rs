@@ -51,6 +51,10 @@ fn decide(op: &Op, known: impl Fn(Reg) -> Option<i64>) -> Option<bool> {
         Op::JLeI { a, imm: k, .. } => imm(a, k, |x, y| x <= y),
         Op::JGtI { a, imm: k, .. } => imm(a, k, |x, y| x > y),
         Op::JGeI { a, imm: k, .. } => imm(a, k, |x, y| x >= y),
+        Op::JAnyI { a, imm: k, .. } => imm(a, k, |x, y| x & y != 0),
+        Op::JNoneI { a, imm: k, .. } => imm(a, k, |x, y| x & y == 0),
+        Op::JIn { a, set, .. } => known(a).map(|x| (x as u64) < 32 && (set >> x) & 1 != 0),
+        Op::JNotIn { a, set, .. } => known(a).map(|x| !((x as u64) < 32 && (set >> x) & 1 != 0)),
         _ => None,
     }
 }
@@ -72,16 +76,9 @@ pub(super) fn fold_branches(c: &mut Compiled) -> bool {
         let mut op = *op;
         let jump_ok =
             matches!(op, Op::Call { .. }) || op.target_mut().is_none_or(|t| *t as usize > pc);
-        let table_ok = match op {
-            Op::Switch { table, .. } => {
-                let table = table as usize;
-                let len = c.tables[table] as usize;
-                c.tables[table + 1..table + 2 + len]
-                    .iter()
-                    .all(|t| *t as usize > pc)
-            }
-            _ => true,
-        };
+        let table_ok = op
+            .switch_entries()
+            .is_none_or(|r| c.tables[r].iter().all(|t| *t as usize > pc));
         jump_ok && table_ok
     });
     if !forward {
@@ -118,16 +115,16 @@ pub(super) fn fold_branches(c: &mut Compiled) -> bool {
                 t: if taken { t } else { pc as u32 + 1 },
             };
         }
-        if let Op::Switch { a, table } = op {
+        if let Op::Switch { a, len, table } = op {
             if let Some(v) = known(a) {
-                let table = table as usize;
-                let len = c.tables[table] as u64;
-                let t = if (v as u64) < len {
-                    c.tables[table + 2 + v as usize]
+                let k = if (v as u64) < len as u64 {
+                    1 + v as usize
                 } else {
-                    c.tables[table + 1]
+                    0
                 };
-                op = Op::Jmp { t };
+                op = Op::Jmp {
+                    t: c.tables[table as usize + k],
+                };
             }
         }
         if op != c.ops[pc] {
@@ -156,14 +153,8 @@ pub(super) fn fold_branches(c: &mut Compiled) -> bool {
                 targets.push(*t as usize);
             }
         }
-        if let Op::Switch { table, .. } = op {
-            let table = table as usize;
-            let len = c.tables[table] as usize;
-            targets.extend(
-                c.tables[table + 1..table + 2 + len]
-                    .iter()
-                    .map(|t| *t as usize),
-            );
+        if let Some(r) = op.switch_entries() {
+            targets.extend(c.tables[r].iter().map(|t| *t as usize));
         }
         for t in targets {
             incoming[t] = Some(match incoming[t].take() {

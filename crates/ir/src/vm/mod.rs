@@ -47,7 +47,7 @@ pub(crate) struct Code {
     pub ops: Vec<Op>,
     /// The run-time check site of each instruction (`u32::MAX` for those that cannot fail).
     pub sites: Vec<SiteId>,
-    /// Switch tables: `[len, end, case 0, .., case len-1]` each.
+    /// Switch tables: `[end, case 0, .., case len-1]` each.
     pub tables: Vec<u32>,
     /// Bounds of the range checks.
     pub bounds: Vec<(i64, i64)>,
@@ -121,18 +121,11 @@ impl Code {
             if let Some(t) = op.target_mut() {
                 assert!(*t < n_ops);
             }
-            match op {
-                Op::Check { bounds, .. } | Op::CheckMov { bounds, .. } => {
-                    assert!((bounds as usize) < self.bounds.len())
-                }
-                Op::Switch { table, .. } => {
-                    let table = table as usize;
-                    let len = self.tables[table] as usize;
-                    assert!(self.tables[table + 1..table + 2 + len]
-                        .iter()
-                        .all(|t| *t < n_ops));
-                }
-                _ => {}
+            if let Op::Check { bounds, .. } | Op::CheckMov { bounds, .. } = op {
+                assert!((bounds as usize) < self.bounds.len());
+            }
+            if let Some(r) = op.switch_entries() {
+                assert!(self.tables[r].iter().all(|t| *t < n_ops));
             }
         }
         assert!(self

@@ -53,6 +53,8 @@ pub(crate) enum Op {
     LAndEqI { d: Reg, a: Reg, b: Reg, imm: i32 },
     /// `d = (a != 0 && b != imm)`.
     LAndNeI { d: Reg, a: Reg, b: Reg, imm: i32 },
+    /// `d = (a in set)`: `0 <= a < 32` and bit `a` of `set` is 1.
+    InSet { d: Reg, a: Reg, set: u32 },
     /// `d = a + imm`, overflow checked.
     AddI { d: Reg, a: Reg, imm: i32 },
     /// `d = a & imm`.
@@ -123,11 +125,19 @@ pub(crate) enum Op {
     JGtI { a: Reg, imm: i32, t: u32 },
     /// Jump if `a >= imm`.
     JGeI { a: Reg, imm: i32, t: u32 },
+    /// Jump if `0 <= a < 32` and bit `a` of `set` is 1.
+    JIn { a: Reg, set: u32, t: u32 },
+    /// Jump unless `0 <= a < 32` and bit `a` of `set` is 1.
+    JNotIn { a: Reg, set: u32, t: u32 },
+    /// Jump if `a & imm != 0`.
+    JAnyI { a: Reg, imm: i32, t: u32 },
+    /// Jump if `a & imm == 0`.
+    JNoneI { a: Reg, imm: i32, t: u32 },
     /// Jump.
     Jmp { t: u32 },
-    /// Jump through the table at [`Code::tables`](super::Code::tables)`[table..]`: `[len, end,
+    /// Jump through the table at [`Code::tables`](super::Code::tables)`[table..]`: `[end,
     /// case 0, .., case len-1]`; to `end` when `a` is not a case.
-    Switch { a: Reg, table: u32 },
+    Switch { a: Reg, len: u16, table: u32 },
     /// Call the code at `t`, returning to the next instruction.
     Call { t: u32 },
     /// Return from a call.
@@ -177,6 +187,7 @@ impl Op {
             | LeI { d, a, .. }
             | GtI { d, a, .. }
             | GeI { d, a, .. }
+            | InSet { d, a, .. }
             | Mov { d, a }
             | Not { d, a }
             | BitNot { d, a }
@@ -209,6 +220,10 @@ impl Op {
             | JLeI { a, .. }
             | JGtI { a, .. }
             | JGeI { a, .. }
+            | JIn { a, .. }
+            | JNotIn { a, .. }
+            | JAnyI { a, .. }
+            | JNoneI { a, .. }
             | Switch { a, .. } => f(a),
             JEq { a, b, .. } | JNe { a, b, .. } | JLt { a, b, .. } | JLe { a, b, .. } => {
                 f(a);
@@ -240,6 +255,10 @@ impl Op {
             | Op::JLeI { .. }
             | Op::JGtI { .. }
             | Op::JGeI { .. }
+            | Op::JIn { .. }
+            | Op::JNotIn { .. }
+            | Op::JAnyI { .. }
+            | Op::JNoneI { .. }
             | Op::Switch { .. } => None,
             _ => first,
         }
@@ -261,8 +280,23 @@ impl Op {
             | JLeI { t, .. }
             | JGtI { t, .. }
             | JGeI { t, .. }
+            | JIn { t, .. }
+            | JNotIn { t, .. }
+            | JAnyI { t, .. }
+            | JNoneI { t, .. }
             | Jmp { t }
             | Call { t } => Some(t),
+            _ => None,
+        }
+    }
+
+    /// The indices of a switch's table entries (its end, then its cases) in
+    /// [`Code::tables`](super::Code::tables).
+    pub(crate) fn switch_entries(&self) -> Option<std::ops::Range<usize>> {
+        match *self {
+            Op::Switch { len, table, .. } => {
+                Some(table as usize..table as usize + 1 + len as usize)
+            }
             _ => None,
         }
     }
@@ -284,6 +318,10 @@ impl Op {
                 | JLeI { .. }
                 | JGtI { .. }
                 | JGeI { .. }
+                | JIn { .. }
+                | JNotIn { .. }
+                | JAnyI { .. }
+                | JNoneI { .. }
         )
     }
 }

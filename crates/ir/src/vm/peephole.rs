@@ -44,10 +44,8 @@ fn thread(c: &mut Compiled) {
             }
         }
         c.ops[pc] = op;
-        if let Op::Switch { table, .. } = op {
-            let table = table as usize;
-            let len = c.tables[table] as usize;
-            for k in table + 1..table + 2 + len {
+        if let Some(r) = op.switch_entries() {
+            for k in r {
                 c.tables[k] = resolve(&c.ops, c.tables[k]);
             }
         }
@@ -97,10 +95,8 @@ fn remove(c: &mut Compiled) -> bool {
         }
     }
     for op in &ops {
-        if let Op::Switch { table, .. } = *op {
-            let table = table as usize;
-            let len = c.tables[table] as usize;
-            for k in table + 1..table + 2 + len {
+        if let Some(r) = op.switch_entries() {
+            for k in r {
                 map(&mut c.tables[k]);
             }
         }

@@ -132,7 +132,7 @@ impl Gen {
             return self.leaf();
         }
         let d = depth - 1;
-        match self.rng.below(13) {
+        match self.rng.below(14) {
             0..=4 => {
                 let op = BINOPS[self.rng.below(BINOPS.len())];
                 let (a, b) = (self.expr(d), self.expr(d));
@@ -175,6 +175,35 @@ impl Gen {
                 self.bound.pop();
                 self.push(Node::Let(l, v, body))
             }
+            12 if self.rng.chance(50) => {
+                // An enumeration tested against several literals, or a mask test.
+                let s = self.rng.below(self.n_slots as usize) as u32;
+                let x = self.push(Node::Slot(s));
+                if self.rng.chance(50) {
+                    let mut e = None;
+                    for _ in 0..2 + self.rng.below(3) {
+                        let k = [0, 1, 2, 3, 5, 7, 30, 31, 32, -1][self.rng.below(10)];
+                        let k = self.push(Node::Const(k));
+                        let t = self.push(Node::Binary(BinOp::Eq, x, k, u32::MAX));
+                        e = Some(match e {
+                            None => t,
+                            Some(e) => self.push(Node::Binary(BinOp::Or, e, t, u32::MAX)),
+                        });
+                    }
+                    e.unwrap_or(x)
+                } else {
+                    let k = CONSTS[self.rng.below(CONSTS.len())];
+                    let k = self.push(Node::Const(k));
+                    let m = self.push(Node::Binary(BinOp::BitAnd, x, k, u32::MAX));
+                    let zero = self.push(Node::Const(0));
+                    let op = if self.rng.chance(50) {
+                        BinOp::Eq
+                    } else {
+                        BinOp::Ne
+                    };
+                    self.push(Node::Binary(op, m, zero, u32::MAX))
+                }
+            }
             _ => {
                 // Flag patterns of the kind the lowering produces: a comparison with a
                 // constant, or `if c then K else 0`.
@@ -204,7 +233,7 @@ impl Gen {
                 let slot = self.rng.below(self.n_slots as usize) as u32;
                 // Small constants often: flags that later statements test.
                 let expr = if self.rng.chance(30) {
-                    let v = self.rng.range(0, 2);
+                    let v = [0, 1, 2, 0, 1, 2, 31, 32, -1][self.rng.below(9)];
                     self.push(Node::Const(v))
                 } else {
                     self.expr(3)
@@ -346,14 +375,13 @@ fn register_code_matches_the_reference_evaluator_on_random_programs() {
     let mut errors = 0;
     let mut ticks = 0;
     let mut calls = 0;
+    let mut sets = 0;
     for seed in 1..=3000u64 {
         let p = random_program(seed);
         assert!(p.code().runnable);
-        calls += p
-            .code()
-            .ops
-            .iter()
-            .any(|op| matches!(op, super::Op::Call { .. })) as u32;
+        let has = |f: fn(&super::Op) -> bool| p.code().ops.iter().any(f) as u32;
+        calls += has(|op| matches!(op, super::Op::Call { .. }));
+        sets += has(|op| matches!(op, super::Op::JIn { .. } | super::Op::InSet { .. }));
         let mut fast = Machine::new(&p);
         let mut slow = Machine::new(&p);
         fast.enable_coverage();
@@ -397,6 +425,8 @@ fn register_code_matches_the_reference_evaluator_on_random_programs() {
     );
     // And calls that are not inlined.
     assert!(calls > 300, "{calls} programs with calls");
+    // And membership tests.
+    assert!(sets > 300, "{sets} programs with membership tests");
 }
 
 /// A program over `n` integer slots (the last one an input) with the given code.

@@ -33,6 +33,12 @@ fn slow_binary(
     statecheck_model::ops::binary(op, a, b).map_err(|e| op_fault(e, code.sites[pc]))
 }
 
+/// `0 <= v < 32` and bit `v` of `set` is 1.
+#[inline(always)]
+fn in_set(v: i64, set: u32) -> bool {
+    (v as u64) < 32 && (set >> v) & 1 != 0
+}
+
 /// Run a segment from `start` until its `End`.
 #[inline(never)]
 pub(crate) fn run(
@@ -137,6 +143,7 @@ fn exec(
             Op::LOr { d, a, b } => r!(d) = ((r!(a) != 0) | (r!(b) != 0)) as i64,
             Op::LAndEqI { d, a, b, imm } => r!(d) = ((r!(a) != 0) & (r!(b) == imm as i64)) as i64,
             Op::LAndNeI { d, a, b, imm } => r!(d) = ((r!(a) != 0) & (r!(b) != imm as i64)) as i64,
+            Op::InSet { d, a, set } => r!(d) = in_set(r!(a), set) as i64,
             Op::AddI { d, a, imm } => r!(d) = checked!(r!(a).checked_add(imm as i64)),
             Op::AndI { d, a, imm } => r!(d) = r!(a) & imm as i64,
             Op::OrI { d, a, imm } => r!(d) = r!(a) | imm as i64,
@@ -188,15 +195,15 @@ fn exec(
             Op::JLeI { a, imm, t } => jump_if!(r!(a) <= imm as i64, t),
             Op::JGtI { a, imm, t } => jump_if!(r!(a) > imm as i64, t),
             Op::JGeI { a, imm, t } => jump_if!(r!(a) >= imm as i64, t),
+            Op::JIn { a, set, t } => jump_if!(in_set(r!(a), set), t),
+            Op::JNotIn { a, set, t } => jump_if!(!in_set(r!(a), set), t),
+            Op::JAnyI { a, imm, t } => jump_if!(r!(a) & imm as i64 != 0, t),
+            Op::JNoneI { a, imm, t } => jump_if!(r!(a) & imm as i64 == 0, t),
             Op::Jmp { t } => pc = t as usize,
-            Op::Switch { a, table } => {
+            Op::Switch { a, len, table } => {
                 let v = r!(a) as u64;
-                let table = table as usize;
-                pc = if v < tables[table] as u64 {
-                    tables[table + 2 + v as usize]
-                } else {
-                    tables[table + 1]
-                } as usize;
+                let k = if v < len as u64 { 1 + v as usize } else { 0 };
+                pc = tables[table as usize + k] as usize;
             }
             Op::Call { t } => {
                 stack[sp] = pc as u32;
@@ -214,5 +221,21 @@ fn exec(
             }
             Op::End => return Ok(()),
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::in_set;
+
+    #[test]
+    fn membership_covers_exactly_0_to_31() {
+        assert!(in_set(0, 1));
+        assert!(in_set(31, 1 << 31));
+        assert!(!in_set(30, 1 << 31));
+        assert!(!in_set(32, u32::MAX));
+        assert!(!in_set(-1, u32::MAX));
+        assert!(!in_set(i64::MIN, u32::MAX));
+        assert!(!in_set(i64::MAX, u32::MAX));
     }
 }
