@@ -10,27 +10,28 @@ use super::Code;
 use crate::interp::{op_fault, RuntimeError, RuntimeErrorKind as K};
 use statecheck_syntax::ast::BinOp;
 
-/// The error of the instruction at `pc`.
+/// The error of the instruction before `next` (the loop has moved past it).
 #[cold]
 #[inline(never)]
-fn fail(code: &Code, pc: usize, kind: K) -> Box<RuntimeError> {
+fn fail(code: &Code, next: usize, kind: K) -> Box<RuntimeError> {
     Box::new(RuntimeError {
         kind,
-        site: code.sites[pc],
+        site: code.sites[next - 1],
     })
 }
 
-/// `a op b` for the operators with several failure modes, through the shared definition.
+/// `a op b` for the operators with several failure modes, through the shared definition;
+/// `next` is the index after the instruction.
 #[cold]
 #[inline(never)]
 fn slow_binary(
     code: &Code,
-    pc: usize,
+    next: usize,
     op: BinOp,
     a: i64,
     b: i64,
 ) -> Result<i64, Box<RuntimeError>> {
-    statecheck_model::ops::binary(op, a, b).map_err(|e| op_fault(e, code.sites[pc]))
+    statecheck_model::ops::binary(op, a, b).map_err(|e| op_fault(e, code.sites[next - 1]))
 }
 
 /// `0 <= v < 32` and bit `v` of `set` is 1.
@@ -102,7 +103,7 @@ fn exec(
         ($v:expr) => {
             match $v {
                 Some(v) => v,
-                None => return Err(fail(code, pc - 1, K::Overflow)),
+                None => return Err(fail(code, pc, K::Overflow)),
             }
         };
     }
@@ -126,10 +127,10 @@ fn exec(
             Op::Add { d, a, b } => r!(d) = checked!(r!(a).checked_add(r!(b))),
             Op::Sub { d, a, b } => r!(d) = checked!(r!(a).checked_sub(r!(b))),
             Op::Mul { d, a, b } => r!(d) = checked!(r!(a).checked_mul(r!(b))),
-            Op::Div { d, a, b } => r!(d) = slow_binary(code, pc - 1, BinOp::Div, r!(a), r!(b))?,
-            Op::Rem { d, a, b } => r!(d) = slow_binary(code, pc - 1, BinOp::Rem, r!(a), r!(b))?,
-            Op::Shl { d, a, b } => r!(d) = slow_binary(code, pc - 1, BinOp::Shl, r!(a), r!(b))?,
-            Op::Shr { d, a, b } => r!(d) = slow_binary(code, pc - 1, BinOp::Shr, r!(a), r!(b))?,
+            Op::Div { d, a, b } => r!(d) = slow_binary(code, pc, BinOp::Div, r!(a), r!(b))?,
+            Op::Rem { d, a, b } => r!(d) = slow_binary(code, pc, BinOp::Rem, r!(a), r!(b))?,
+            Op::Shl { d, a, b } => r!(d) = slow_binary(code, pc, BinOp::Shl, r!(a), r!(b))?,
+            Op::Shr { d, a, b } => r!(d) = slow_binary(code, pc, BinOp::Shr, r!(a), r!(b))?,
             Op::And { d, a, b } => r!(d) = r!(a) & r!(b),
             Op::Or { d, a, b } => r!(d) = r!(a) | r!(b),
             Op::Xor { d, a, b } => r!(d) = r!(a) ^ r!(b),
@@ -172,14 +173,14 @@ fn exec(
                 let v = r!(a);
                 let (lo, hi) = code.bounds[bounds as usize];
                 if v < lo || v > hi {
-                    return Err(fail(code, pc - 1, K::Range { value: v, lo, hi }));
+                    return Err(fail(code, pc, K::Range { value: v, lo, hi }));
                 }
             }
             Op::CheckMov { d, a, bounds } => {
                 let v = r!(a);
                 let (lo, hi) = code.bounds[bounds as usize];
                 if v < lo || v > hi {
-                    return Err(fail(code, pc - 1, K::Range { value: v, lo, hi }));
+                    return Err(fail(code, pc, K::Range { value: v, lo, hi }));
                 }
                 r!(d) = v;
             }
