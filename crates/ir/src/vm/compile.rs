@@ -68,6 +68,12 @@ impl Cmp {
     }
 }
 
+/// A term of a tree of `|`: a `let` binding met on the way, or an operand.
+enum OrTerm {
+    Bind(u32, ExprId),
+    Value(ExprId),
+}
+
 /// The output of the compiler, before peephole optimisation.
 pub(super) struct Compiled {
     pub ops: Vec<Op>,
@@ -940,43 +946,102 @@ impl Compiler<'_> {
         d
     }
 
-    /// The leaf-select operand of `a | b`: `(c, x, y)` of `if c then x else y`, when `a` or
-    /// `b` is one whose value is not already available; `Some(true)` when it is `b`.
-    fn select_operand(&self, a: ExprId, b: ExprId) -> Option<(bool, ExprId, ExprId, ExprId)> {
-        let leaf_ite = |e: ExprId| match *self.node(e) {
-            Node::Ite(c, x, y) if self.is_leaf(x) && self.is_leaf(y) => {
-                (!self.avail.contains_key(&e)).then_some((c, x, y))
+    /// The terms of a tree of `|`, left to right, looking through `let`s and range checks that
+    /// cannot fail: the bindings (in evaluation order) and the operands.
+    fn or_terms(&mut self, e: ExprId, out: &mut Vec<OrTerm>) {
+        if self.avail.contains_key(&e) {
+            out.push(OrTerm::Value(e));
+            return;
+        }
+        let node = self.p.nodes[e as usize].clone();
+        match node {
+            Node::Binary(BinOp::BitOr, a, b, _) => {
+                self.or_terms(a, out);
+                self.or_terms(b, out);
             }
-            _ => None,
-        };
-        if let Some((c, x, y)) = leaf_ite(b) {
-            Some((true, c, x, y))
-        } else {
-            leaf_ite(a).map(|(c, x, y)| (false, c, x, y))
+            Node::Let(l, v, body) => {
+                out.push(OrTerm::Bind(l, v));
+                self.or_terms(body, out);
+            }
+            Node::Check(a, lo, hi, _) if self.iv.within(a, lo, hi) => self.or_terms(a, out),
+            _ => out.push(OrTerm::Value(e)),
         }
     }
 
-    /// `a | (if c then x else y)` (or the mirror image) over leaves `x`, `y`, as one
-    /// [`Op::OrSel`]: the idiom that packs booleans into a flag register. Operands are
-    /// evaluated in the tree evaluator's order.
-    fn or_select(&mut self, a: ExprId, b: ExprId, want: Option<Reg>) -> Option<Reg> {
-        let (sel_is_b, c, x, y) = self.select_operand(a, b)?;
-        let (other, c) = if sel_is_b {
-            self.operands(a, c)
-        } else {
-            let (c, other) = self.operands(c, b);
-            (other, c)
-        };
-        let (x, y) = (self.expr(x), self.expr(y));
-        let d = self.dest(want);
-        self.emit(Op::OrSel {
-            d,
-            a: other,
-            c,
-            x,
-            y,
-        });
-        Some(d)
+    /// `a | b` as one accumulation over the terms of the `|`-tree, left to right (the tree
+    /// evaluator's order; `|` is associative and cannot fail): a term `if c then x else y` over
+    /// leaves is one [`Op::OrSel`], a constant an [`Op::OrI`]. This is the idiom that packs
+    /// booleans into a flag register, often through an inlined function (whose arguments are
+    /// `let`-bound).
+    fn or_tree(&mut self, a: ExprId, b: ExprId, want: Option<Reg>) -> Reg {
+        let mut terms = Vec::new();
+        self.or_terms(a, &mut terms);
+        self.or_terms(b, &mut terms);
+        let values = terms
+            .iter()
+            .filter(|t| matches!(t, OrTerm::Value(_)))
+            .count();
+        let mut acc: Option<Reg> = None;
+        let mut left = values;
+        for term in terms {
+            let e = match term {
+                OrTerm::Bind(l, v) => {
+                    let local = (self.locals_base + l) as Reg;
+                    if let Some(r) = acc.filter(|r| self.is_local_reg(*r)) {
+                        // The tree evaluator has read the local before this rebinding.
+                        let t = self.temp();
+                        self.emit(Op::Mov { d: t, a: r });
+                        acc = Some(t);
+                    }
+                    self.into(v, local);
+                    continue;
+                }
+                OrTerm::Value(e) => e,
+            };
+            left -= 1;
+            let Some(x) = acc else {
+                acc = Some(self.expr(e));
+                continue;
+            };
+            let leaf_ite = match *self.node(e) {
+                Node::Ite(c, p, q) if self.is_leaf(p) && self.is_leaf(q) => Some((c, p, q)),
+                _ => None,
+            };
+            let op = if let Some((c, p, q)) = leaf_ite.filter(|_| !self.avail.contains_key(&e)) {
+                let c = self.expr(c);
+                let (p, q) = (self.expr(p), self.expr(q));
+                let d = if left == 0 {
+                    self.dest(want)
+                } else {
+                    self.temp()
+                };
+                Op::OrSel {
+                    d,
+                    a: x,
+                    c,
+                    x: p,
+                    y: q,
+                }
+            } else if let Some(imm) = self.imm_of(e) {
+                let d = if left == 0 {
+                    self.dest(want)
+                } else {
+                    self.temp()
+                };
+                Op::OrI { d, a: x, imm }
+            } else {
+                let y = self.expr(e);
+                let d = if left == 0 {
+                    self.dest(want)
+                } else {
+                    self.temp()
+                };
+                Op::Or { d, a: x, b: y }
+            };
+            self.emit(op);
+            acc = op.dest();
+        }
+        acc.unwrap_or(0)
     }
 
     /// Arithmetic and bitwise operators (not comparisons, not `&&`/`||`).
@@ -992,10 +1057,8 @@ impl Compiler<'_> {
             (Some(k), None) if commutative => Some((b, k)),
             _ => None,
         };
-        if op == BinOp::BitOr && with_imm.is_none() {
-            if let Some(d) = self.or_select(a, b, want) {
-                return d;
-            }
+        if op == BinOp::BitOr {
+            return self.or_tree(a, b, want);
         }
         if let Some((x, imm)) = with_imm {
             let a = self.expr(x);

@@ -501,3 +501,32 @@ fn a_call_forgets_known_register_values() {
         assert_eq!(m.get(1), input, "input {input}");
     }
 }
+
+/// An operand read from a local is kept when a later operand rebinds that local (the tree
+/// evaluator has read it before): `let l = s0 in (l | (let l = s1 in l))` and the same with
+/// `+`, whose value is `s0 | s1` (`s0 + s1`), not `s1 | s1`.
+#[test]
+fn an_operand_read_from_a_local_survives_its_rebinding() {
+    for op in [BinOp::BitOr, BinOp::Add, BinOp::Lt] {
+        let nodes = vec![
+            Node::Slot(0),
+            Node::Slot(1),
+            Node::Local(0),
+            Node::Let(0, 1, 2),
+            Node::Binary(op, 2, 3, 0),
+            Node::Let(0, 0, 4),
+        ];
+        let step = vec![Stmt::Assign {
+            slot: 2,
+            expr: 5,
+            site: None,
+        }];
+        let mut p = handmade(4, nodes, Vec::new(), step);
+        p.slots[0].init = 1;
+        p.slots[1].init = 6;
+        let mut m = Machine::new(&p);
+        m.step().expect("no error");
+        let want = statecheck_model::ops::binary(op, 1, 6).expect("no error");
+        assert_eq!(m.get(2), want, "{op:?}");
+    }
+}
