@@ -530,3 +530,33 @@ fn an_operand_read_from_a_local_survives_its_rebinding() {
         assert_eq!(m.get(2), want, "{op:?}");
     }
 }
+
+/// A program with more registers than [`super::Reg`] can number runs on the reference
+/// evaluator, with the same results.
+#[test]
+fn programs_too_big_for_the_register_code_run_on_the_reference_evaluator() {
+    let n = 40_000u32;
+    let nodes = vec![Node::Slot(n - 2), Node::Const(1)];
+    let add = Node::Binary(BinOp::Add, 0, 1, 0);
+    let nodes = [nodes, vec![add]].concat();
+    let step = vec![Stmt::Assign {
+        slot: n - 2,
+        expr: 2,
+        site: Some(1),
+    }];
+    let p = handmade(n, nodes, Vec::new(), step);
+    assert!(!p.code().runnable);
+    let mut m = Machine::new(&p);
+    for tick in 1..=9 {
+        m.step().expect("in range");
+        assert_eq!(m.get(n - 2), tick);
+    }
+    assert_eq!(
+        m.step().map_err(|e| e.kind),
+        Err(crate::RuntimeErrorKind::Range {
+            value: 10,
+            lo: 0,
+            hi: 9
+        })
+    );
+}
