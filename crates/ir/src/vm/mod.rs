@@ -7,7 +7,8 @@
 //! both on the same inputs and compare.
 //!
 //! - `op.rs`: the instruction set;
-//! - `compile.rs`: the translation;
+//! - `compile.rs`: the translation (statements; `compile/cond.rs` conditions,
+//!   `compile/value.rs` values, `compile/idioms.rs` the flag idioms);
 //! - `interval.rs`: value intervals, to drop range checks that cannot fail;
 //! - `peephole.rs`: jump threading and removal of useless jumps;
 //! - `constprop.rs`: branches on registers of known value;
