@@ -23,14 +23,18 @@ fn meet(a: Facts, b: &Facts) -> Facts {
     a.into_iter().filter(|f| b.contains(f)).collect()
 }
 
+/// At most this many facts are kept at a time (a bound on the pass's cost for large programs;
+/// forgetting a fact is always sound).
+const MAX_FACTS: usize = 64;
+
 fn set(facts: &mut Facts, r: Reg, v: Option<i64>) {
     match (facts.binary_search_by_key(&r, |f| f.0), v) {
         (Ok(i), Some(v)) => facts[i].1 = v,
         (Ok(i), None) => {
             facts.remove(i);
         }
-        (Err(i), Some(v)) => facts.insert(i, (r, v)),
-        (Err(_), None) => {}
+        (Err(i), Some(v)) if facts.len() < MAX_FACTS => facts.insert(i, (r, v)),
+        (Err(_), _) => {}
     }
 }
 

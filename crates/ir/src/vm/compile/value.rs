@@ -40,7 +40,8 @@ fn total(nodes: &[Node], e: ExprId) -> bool {
     }
 }
 
-/// Number of operator nodes in `e`, up to `limit` (a leaf counts 0).
+/// Number of operator nodes in `e` (a leaf counts 0), or any number above `limit` once it is
+/// known to exceed it: the walk visits at most `limit + 1` operators.
 fn size(nodes: &[Node], e: ExprId, limit: u32) -> u32 {
     let kids: &[ExprId] = match &nodes[e as usize] {
         Node::Const(_) | Node::Slot(_) | Node::Local(_) => return 0,
@@ -55,7 +56,7 @@ fn size(nodes: &[Node], e: ExprId, limit: u32) -> u32 {
         if n > limit {
             break;
         }
-        n += size(nodes, k, limit);
+        n += size(nodes, k, limit - n);
     }
     n
 }
@@ -153,7 +154,7 @@ impl Compiler<'_> {
                 d
             }
             Node::Binary(op @ (BinOp::And | BinOp::Or), a, b, _)
-                if total(&self.p.nodes, b) && size(&self.p.nodes, b, EAGER_SIZE) <= EAGER_SIZE =>
+                if size(&self.p.nodes, b, EAGER_SIZE) <= EAGER_SIZE && total(&self.p.nodes, b) =>
             {
                 if op == BinOp::And {
                     if let Some(d) = self.and_test(a, b, want) {
