@@ -176,10 +176,27 @@ impl Gen {
                 self.push(Node::Let(l, v, body))
             }
             12 if self.rng.chance(50) => {
-                // An enumeration tested against several literals, or a mask test.
+                // An enumeration tested against several literals, a mask test, or a mask
+                // computed by a choice with a constant branch: `s & (K ^ (if c then e else 0))`.
                 let s = self.rng.below(self.n_slots as usize) as u32;
                 let x = self.push(Node::Slot(s));
-                if self.rng.chance(50) {
+                if self.rng.chance(35) {
+                    let c = self.expr(d);
+                    let e = self.expr(d);
+                    let k = CONSTS[self.rng.below(CONSTS.len())];
+                    let k = self.push(Node::Const(k));
+                    let ite = if self.rng.chance(50) {
+                        self.push(Node::Ite(c, e, k))
+                    } else {
+                        self.push(Node::Ite(c, k, e))
+                    };
+                    let m = self.push(Node::Const(0xFF));
+                    let ops = [BinOp::BitAnd, BinOp::BitXor];
+                    let inner = ops[self.rng.below(2)];
+                    let inner = self.push(Node::Binary(inner, m, ite, u32::MAX));
+                    let outer = ops[self.rng.below(2)];
+                    self.push(Node::Binary(outer, x, inner, u32::MAX))
+                } else if self.rng.chance(50) {
                     let mut e = None;
                     for _ in 0..2 + self.rng.below(3) {
                         let k = [0, 1, 2, 3, 5, 7, 30, 31, 32, -1][self.rng.below(10)];

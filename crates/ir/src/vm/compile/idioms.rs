@@ -1,9 +1,11 @@
 //! The flag idioms of supervisory-controller models as single instructions: a flag combined
-//! with a state test (`a && s == k`) and the packing of booleans into a flag register
-//! (`r | (if c then K else 0) | ..`, through the `let`-bound arguments of an inlined function).
+//! with a state test (`a && s == k`), the packing of booleans into a flag register
+//! (`r | (if c then K else 0) | ..`, through the `let`-bound arguments of an inlined function),
+//! and masks computed by a choice with a constant branch (`r & (K ^ (if c then .. else 0))`).
 
 use super::{Compiler, Op, Reg};
 use crate::program::*;
+use statecheck_model::ops;
 use statecheck_syntax::ast::BinOp;
 
 /// A term of a tree of `|`: a `let` binding met on the way, or an operand.
@@ -146,5 +148,146 @@ impl Compiler<'_> {
             acc = op.dest();
         }
         acc.unwrap_or(0)
+    }
+
+    /// True when `e` is a choice `if c then x else y` (compiled with jumps, one branch a
+    /// constant) under `let`s, range checks that cannot fail, and `&`/`^` with a constant or
+    /// slot operand: the pending
+    /// operations are then applied in each branch, and fold with the constant one.
+    pub(super) fn mask_of_choice(&mut self, e: ExprId) -> bool {
+        let known = |c: &Self, x: ExprId| matches!(c.node(x), Node::Const(_) | Node::Slot(_));
+        match *self.node(e) {
+            Node::Let(_, _, body) => self.mask_of_choice(body),
+            Node::Check(a, lo, hi, _) => self.iv.within(a, lo, hi) && self.mask_of_choice(a),
+            Node::Binary(BinOp::BitAnd | BinOp::BitXor, a, b, _) => {
+                (known(self, a) && self.mask_of_choice(b))
+                    || (known(self, b) && self.mask_of_choice(a))
+            }
+            Node::Ite(_, x, y) => {
+                !(self.is_leaf(x) && self.is_leaf(y))
+                    && (self.imm_of(x).is_some() || self.imm_of(y).is_some())
+            }
+            _ => false,
+        }
+    }
+
+    /// Compile `e` (for which [`Self::mask_of_choice`] holds) followed by the `pending`
+    /// operations (applied first to last), into `want`. The constant or slot operand of an
+    /// `&`/`^` is read when the operation is applied: slots do not change during an
+    /// expression, and `&`, `^` cannot fail, so the order of evaluation is the tree
+    /// evaluator's.
+    pub(super) fn masked_choice(
+        &mut self,
+        e: ExprId,
+        mut pending: Vec<Pending>,
+        want: Option<Reg>,
+    ) -> Reg {
+        let node = self.node(e).clone();
+        match node {
+            Node::Let(l, v, body) => {
+                self.into(v, (self.locals_base + l) as Reg);
+                self.masked_choice(body, pending, want)
+            }
+            // A check that cannot fail (`mask_of_choice` holds only then).
+            Node::Check(a, ..) => self.masked_choice(a, pending, want),
+            Node::Binary(op @ (BinOp::BitAnd | BinOp::BitXor), a, b, _) => {
+                let (operand, rest) = if self.mask_of_choice(b) {
+                    (a, b)
+                } else {
+                    (b, a)
+                };
+                let p = match self.imm_of(operand) {
+                    Some(k) => Pending::Imm(op, k),
+                    None => Pending::Reg(op, self.expr(operand)),
+                };
+                // Applied to `rest`'s value before the operations already pending.
+                pending.insert(0, p);
+                self.masked_choice(rest, pending, want)
+            }
+            Node::Ite(c, x, y) => {
+                // The condition is read before either branch writes the destination, and each
+                // branch writes it last.
+                let d = self.dest(want);
+                let mut fails = Vec::new();
+                self.jump_when(c, false, &mut fails);
+                self.apply_pending(x, &pending, d);
+                let jmp = self.emit_jump(Op::Jmp { t: 0 });
+                let else_start = self.here();
+                self.patch_all(fails, else_start);
+                self.apply_pending(y, &pending, d);
+                let end = self.here();
+                self.patch(jmp, end);
+                d
+            }
+            _ => {
+                let d = self.dest(want);
+                self.apply_pending(e, &pending, d);
+                d
+            }
+        }
+    }
+
+    /// `e`'s value with the `pending` operations applied, into `d`; operations on constants
+    /// are folded.
+    fn apply_pending(&mut self, e: ExprId, pending: &[Pending], d: Reg) {
+        let mut k = match *self.node(e) {
+            Node::Const(v) => Some(v),
+            _ => None,
+        };
+        let mut r = None;
+        if k.is_none() {
+            r = Some(self.expr(e));
+        }
+        for (i, p) in pending.iter().enumerate() {
+            let last = i + 1 == pending.len();
+            let dst = if last { d } else { self.temp() };
+            let op = match (*p, k, r) {
+                (Pending::Imm(op, x), Some(v), _) => {
+                    k = ops::binary(op, v, x as i64).ok();
+                    continue;
+                }
+                (Pending::Imm(op, x), None, Some(a)) => bitwise_imm(op, dst, a, x),
+                (Pending::Reg(op, b), Some(v), _) => match i32::try_from(v) {
+                    Ok(x) => bitwise_imm(op, dst, b, x),
+                    Err(_) => {
+                        let a = self.konst(v);
+                        bitwise(op, dst, a, b)
+                    }
+                },
+                (Pending::Reg(op, b), None, Some(a)) => bitwise(op, dst, a, b),
+                (_, None, None) => return,
+            };
+            self.emit(op);
+            k = None;
+            r = Some(dst);
+        }
+        match (k, r) {
+            (Some(v), _) => self.load_const(v, d),
+            (None, Some(a)) if a != d => self.emit(Op::Mov { d, a }),
+            _ => {}
+        }
+    }
+}
+
+/// An operation waiting for its left operand: `& k`, `^ k`, `& r`, `^ r`.
+#[derive(Clone, Copy)]
+pub(super) enum Pending {
+    Imm(BinOp, i32),
+    Reg(BinOp, Reg),
+}
+
+fn bitwise_imm(op: BinOp, d: Reg, a: Reg, imm: i32) -> Op {
+    if op == BinOp::BitAnd {
+        Op::AndI { d, a, imm }
+    } else {
+        Op::XorI { d, a, imm }
+    }
+}
+
+fn bitwise(op: BinOp, d: Reg, a: Reg, b: Reg) -> Op {
+    if op == BinOp::BitAnd {
+        Op::And { d, a, b }
+    } else {
+        Op::Xor { d, a, b }
     }
 }

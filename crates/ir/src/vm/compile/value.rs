@@ -88,6 +88,17 @@ impl Compiler<'_> {
         (self.locals_base..self.temps_base).contains(&(r as u32))
     }
 
+    /// The constant `v` into register `d`.
+    pub(super) fn load_const(&mut self, v: i64, d: Reg) {
+        match imm(v) {
+            Some(imm) => self.emit(Op::MovI { d, imm }),
+            None => {
+                let a = self.konst(v);
+                self.emit(Op::Mov { d, a });
+            }
+        }
+    }
+
     /// Compile `e` into register `d`.
     pub(super) fn into(&mut self, e: ExprId, d: Reg) {
         if let Node::Const(v) = *self.node(e) {
@@ -122,7 +133,8 @@ impl Compiler<'_> {
 
     /// [`Self::expr_into`] without reuse.
     pub(super) fn compute(&mut self, e: ExprId, want: Option<Reg>) -> Reg {
-        match *self.node(e) {
+        let node = self.node(e).clone();
+        match node {
             Node::Const(v) => self.konst(v),
             Node::Slot(s) => s as Reg,
             Node::Local(l) => (self.locals_base + l) as Reg,
@@ -191,6 +203,9 @@ impl Compiler<'_> {
                     UnOp::Not => self.emit(Op::Not { d, a }),
                 }
                 d
+            }
+            Node::Binary(BinOp::BitAnd | BinOp::BitXor, ..) if self.mask_of_choice(e) => {
+                self.masked_choice(e, Vec::new(), want)
             }
             Node::Binary(op, a, b, site) => self.binary(op, a, b, site, want),
             Node::Ite(c, a, b) if self.is_leaf(a) && self.is_leaf(b) => {
