@@ -24,14 +24,21 @@ const NO_SITE: SiteId = u32::MAX;
 
 /// The output of the compiler, before peephole optimisation.
 pub(super) struct Compiled {
+    /// The instructions.
     pub ops: Vec<Op>,
+    /// The run-time check site of each instruction.
     pub sites: Vec<SiteId>,
+    /// Switch tables (see [`Op::Switch`]).
     pub tables: Vec<u32>,
+    /// Bounds of the range checks.
     pub bounds: Vec<(i64, i64)>,
+    /// The initial register file.
     pub init_regs: Vec<i64>,
     /// The first constant register (the constants are never written).
     pub const_base: u32,
+    /// Entry point of one tick.
     pub step: u32,
+    /// Start and result register of each compiled expression.
     pub exprs: HashMap<ExprId, (u32, Reg)>,
 }
 

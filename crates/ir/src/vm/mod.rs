@@ -34,7 +34,9 @@ use std::collections::HashMap;
 /// A compiled expression: run from `start` to its `End`, result in `reg`.
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct Segment {
+    /// First instruction.
     pub start: u32,
+    /// The register holding the value after `End`.
     pub reg: Reg,
 }
 
