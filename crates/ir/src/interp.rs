@@ -93,11 +93,6 @@ fn fault(kind: RuntimeErrorKind, site: SiteId) -> Fault {
     Box::new(RuntimeError { kind, site })
 }
 
-/// A boxed run-time error (for the compiled fast path).
-pub(crate) fn fault_of(kind: RuntimeErrorKind, site: SiteId) -> Fault {
-    fault(kind, site)
-}
-
 /// The state of one running system.
 ///
 /// Its register file holds the program's slots first, then the compiled code's locals,
@@ -108,6 +103,8 @@ pub struct Machine<'p> {
     code: &'p crate::vm::Code,
     /// All registers; `regs[..slots.len()]` are the slots.
     regs: Vec<i64>,
+    /// The compiled code's return stack.
+    stack: Vec<u32>,
     /// Number of slots.
     n_slots: usize,
     /// Coverage counters, if enabled.
@@ -122,6 +119,7 @@ impl<'p> Machine<'p> {
             program,
             code,
             regs: code.init_regs.clone(),
+            stack: vec![0; code.max_depth],
             n_slots: program.slots.len(),
             coverage: None,
         }
@@ -173,7 +171,8 @@ impl<'p> Machine<'p> {
     /// assumption or active-state expression of the program).
     pub fn eval(&mut self, e: ExprId) -> Result<i64, RuntimeError> {
         if let Some(seg) = self.code.exprs.get(&e) {
-            crate::vm::run(self.code, &mut self.regs, None, seg.start).map_err(|f| *f)?;
+            crate::vm::run(self.code, &mut self.regs, &mut self.stack, None, seg.start)
+                .map_err(|f| *f)?;
             return Ok(self.regs[seg.reg as usize]);
         }
         eval(&self.program.nodes, &self.regs[..self.n_slots], e)
@@ -182,12 +181,13 @@ impl<'p> Machine<'p> {
     /// Run one tick with the inputs currently in the input slots.
     #[inline]
     pub fn step(&mut self) -> Result<(), RuntimeError> {
-        if self.code.max_depth > crate::vm::STACK {
+        if !self.code.runnable {
             return self.step_reference();
         }
         crate::vm::run(
             self.code,
             &mut self.regs,
+            &mut self.stack,
             self.coverage.as_deref_mut(),
             self.code.step,
         )

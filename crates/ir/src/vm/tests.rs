@@ -1,0 +1,165 @@
+//! Tests of the register code on the FAM plant: how many instructions a step executes.
+
+use super::run::run_counting;
+use super::{Code, Op};
+use crate::Program;
+
+fn fam() -> Program {
+    let path = concat!(env!("CARGO_MANIFEST_DIR"), "/../../examples/fam/fam.sc");
+    let source = std::fs::read_to_string(path).expect("the FAM example is readable");
+    let (file, _) = statecheck_syntax::parse(&source);
+    let (model, _) = statecheck_model::check(&file);
+    let sys = model
+        .systems
+        .iter()
+        .find(|s| !s.implicit)
+        .expect("the FAM example has a system");
+    crate::lower(&model, sys).expect("the FAM example lowers")
+}
+
+/// Executed instructions per step, and per instruction, over `steps` random steps.
+fn profile(p: &Program, code: &Code, steps: u64) -> (f64, Vec<u64>) {
+    let mut counts = vec![0u64; code.ops.len()];
+    let mut regs = code.init_regs.clone();
+    let mut rng = 42u64;
+    for _ in 0..steps {
+        for inp in &p.inputs {
+            let s = &p.slots[inp.slot as usize];
+            rng ^= rng << 13;
+            rng ^= rng >> 7;
+            rng ^= rng << 17;
+            regs[inp.slot as usize] = s.lo + (rng % ((s.hi - s.lo + 1) as u64)) as i64;
+        }
+        if run_counting(code, &mut regs, code.step, &mut counts).is_err() {
+            regs = code.init_regs.clone();
+        }
+    }
+    let total: u64 = counts.iter().sum();
+    (total as f64 / steps as f64, counts)
+}
+
+/// The benchmark's model stays cheap: a regression guard on the instructions a step executes
+/// (91 before the instruction set was specialised). `--nocapture` prints the code and profile.
+#[test]
+fn a_fam_step_executes_few_instructions() {
+    let p = fam();
+    let code = p.code();
+    assert!(code.runnable);
+    let (per_step, counts) = profile(&p, code, 20_000);
+    for (pc, op) in code.ops.iter().enumerate() {
+        println!("{pc:4} {:7.3} {op:?}", counts[pc] as f64 / 20_000.0);
+    }
+    println!(
+        "{} instructions, {} registers, {per_step:.2} executed per step",
+        code.ops.len(),
+        code.init_regs.len()
+    );
+    assert!(per_step < 60.0, "{per_step} instructions per step");
+}
+
+/// A one-chart system from source.
+fn program(source: &str) -> Program {
+    let (file, d1) = statecheck_syntax::parse(source);
+    let (model, d2) = statecheck_model::check(&file);
+    assert!(!d1.iter().chain(&d2).any(|d| d.is_error()), "{d1:?} {d2:?}");
+    let sys = model
+        .systems
+        .iter()
+        .find(|s| !s.implicit)
+        .expect("a system");
+    crate::lower(&model, sys).expect("lowers")
+}
+
+const FLAGS: &str = "
+chart Flags {
+  input a: bool = false;
+  input b: bool = false;
+  output flags: int[0..255] = 0;
+  output small: int[0..127] = 0;
+  region r {
+    initial s;
+    state s {
+      during {
+        flags = (if a then 0x80 else 0) | (if b then 0x40 else 0) | 1;
+        small = (if a then 0x80 else 0) | (if b then 0x40 else 0) | 1;
+      }
+    }
+  }
+}
+system S { instance f: Flags; }
+";
+
+fn range_checks(code: &Code) -> usize {
+    code.ops
+        .iter()
+        .filter(|op| matches!(op, Op::Check { .. } | Op::CheckMov { .. }))
+        .count()
+}
+
+/// The check on `flags` cannot fail and is dropped; the one on `small` can and stays, and
+/// reports the same error at the same site as the reference evaluator.
+#[test]
+fn range_checks_are_dropped_only_when_they_cannot_fail() {
+    let p = program(FLAGS);
+    let checked = |name: &str| {
+        let slot = p.slots.iter().position(|s| s.name.ends_with(name));
+        fn find(b: &[crate::Stmt], slot: u32) -> Option<Option<u32>> {
+            b.iter().find_map(|s| match s {
+                crate::Stmt::Assign { slot: s, site, .. } if *s == slot => Some(*site),
+                crate::Stmt::If {
+                    then, otherwise, ..
+                } => find(then, slot).or_else(|| find(otherwise, slot)),
+                crate::Stmt::Switch { cases, .. } => cases.iter().find_map(|c| find(c, slot)),
+                _ => None,
+            })
+        }
+        let slot = slot.expect("slot") as u32;
+        std::iter::once(&p.step[..])
+            .chain(p.procs.iter().map(|q| &q.body[..]))
+            .find_map(|b| find(b, slot))
+            .flatten()
+    };
+    // The lowering checks both assignments; the register code only the one to `small`.
+    assert!(checked("flags").is_some());
+    let small_site = checked("small").expect("`small` is range checked");
+    let code = p.code();
+    assert_eq!(range_checks(code), 1);
+    let slot = |name: &str| {
+        p.inputs
+            .iter()
+            .find(|i| i.name.ends_with(name))
+            .expect("input")
+            .slot
+    };
+    for (a, b, want) in [
+        (0, 0, None),
+        (0, 1, None),
+        (1, 0, Some(0x81)),
+        (1, 1, Some(0xC1)),
+    ] {
+        let mut fast = crate::Machine::new(&p);
+        let mut slow = crate::Machine::new(&p);
+        for m in [&mut fast, &mut slow] {
+            m.set(slot("a"), a);
+            m.set(slot("b"), b);
+            m.step().expect("the initialisation tick");
+        }
+        let (x, y) = (fast.step(), slow.step_reference());
+        assert_eq!(x, y);
+        assert_eq!(fast.slots(), slow.slots());
+        match want {
+            None => assert!(x.is_ok()),
+            Some(value) => assert_eq!(
+                x,
+                Err(crate::RuntimeError {
+                    kind: crate::RuntimeErrorKind::Range {
+                        value,
+                        lo: 0,
+                        hi: 127
+                    },
+                    site: small_site,
+                })
+            ),
+        }
+    }
+}
