@@ -5,29 +5,14 @@
 //! `Reduction::lift`) with the explicit engine's shortest length; every invariant that comes
 //! back passes the certificate check on the original circuit.
 
+mod common_models;
+
 use statecheck_explicit::{Options, Verdict};
-use statecheck_ir::lower;
 use statecheck_symbolic::aig::{Aig, Lit};
 use statecheck_symbolic::check::problems;
 use statecheck_symbolic::engine::{Limits, Outcome};
 use statecheck_symbolic::scorr::{reduce, SPURIOUS};
-use std::path::{Path, PathBuf};
 use std::time::{Duration, Instant};
-
-fn models(dir: &Path, out: &mut Vec<PathBuf>) {
-    let Ok(entries) = std::fs::read_dir(dir) else {
-        return;
-    };
-    let mut entries: Vec<PathBuf> = entries.filter_map(|e| e.ok().map(|e| e.path())).collect();
-    entries.sort();
-    for p in entries {
-        if p.is_dir() {
-            models(&p, out);
-        } else if p.extension().is_some_and(|e| e == "sc") {
-            out.push(p);
-        }
-    }
-}
 
 fn limits(secs: u64) -> Limits {
     Limits {
@@ -38,62 +23,47 @@ fn limits(secs: u64) -> Limits {
 
 #[test]
 fn reduction_keeps_every_verdict() {
-    let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("../..");
-    let mut files = Vec::new();
-    models(&root.join("tests"), &mut files);
-    models(&root.join("examples"), &mut files);
     let (mut compared, mut merged, mut certified, mut spurious) = (0, 0, 0, 0);
-    for f in &files {
-        let src = std::fs::read_to_string(f).expect("readable");
-        let (file, d1) = statecheck_syntax::parse(&src);
-        let (model, d2) = statecheck_model::check(&file);
-        if d1.iter().chain(&d2).any(|d| d.is_error()) {
+    for (name, p) in common_models::programs() {
+        let opts = Options {
+            threads: 1,
+            max_states: Some(50_000),
+            ..Options::default()
+        };
+        let Ok(rep) = statecheck_explicit::verify(&p, &opts, None) else {
+            continue;
+        };
+        if !rep.stats.complete && !rep.stats.all_decided {
             continue;
         }
-        for sys in &model.systems {
-            let Ok(p) = lower(&model, sys) else { continue };
-            let opts = Options {
-                threads: 1,
-                max_states: Some(50_000),
-                ..Options::default()
-            };
-            let Ok(rep) = statecheck_explicit::verify(&p, &opts, None) else {
-                continue;
-            };
-            if !rep.stats.complete && !rep.stats.all_decided {
+        let (bl, idx) = problems(&p, &[]).expect("all properties");
+        for (r, &(pi, _)) in rep.results.iter().zip(&idx) {
+            if r.verdict == Verdict::Unknown || r.depth > 40 && r.counterexample.is_some() {
                 continue;
             }
-            let (bl, idx) = problems(&p, &[]).expect("all properties");
-            for (r, &(pi, _)) in rep.results.iter().zip(&idx) {
-                if r.verdict == Verdict::Unknown || r.depth > 40 && r.counterexample.is_some() {
-                    continue;
+            let at = format!("{name}: {}", r.name);
+            let g = bl.problem(pi);
+            let red = reduce(&g, &limits(30)).unwrap_or_else(|e| panic!("{at}: {e}"));
+            merged += red.stats.merged;
+            assert!(red.aig.latches.len() <= g.latches.len(), "{at}");
+            let out = red.lift(&g, statecheck_symbolic::ic3::ic3(&red.aig, &limits(30)));
+            match (&out, r.verdict) {
+                (Outcome::Proved(inv), Verdict::Proved | Verdict::Unreachable) => {
+                    if let Some(inv) = inv {
+                        statecheck_symbolic::cert::check(&g, inv)
+                            .unwrap_or_else(|e| panic!("{at}: certificate: {e}"));
+                        certified += 1;
+                    }
                 }
-                let at = format!("{}: {}: {}", f.display(), sys.name, r.name);
-                let g = bl.problem(pi);
-                let red = reduce(&g, &limits(30)).unwrap_or_else(|e| panic!("{at}: {e}"));
-                merged += red.stats.merged;
-                assert!(red.aig.latches.len() <= g.latches.len(), "{at}");
-                let out = red.lift(&g, statecheck_symbolic::ic3::ic3(&red.aig, &limits(30)));
-                match (&out, r.verdict) {
-                    (Outcome::Proved(inv), Verdict::Proved | Verdict::Unreachable) => {
-                        if let Some(inv) = inv {
-                            statecheck_symbolic::cert::check(&g, inv)
-                                .unwrap_or_else(|e| panic!("{at}: certificate: {e}"));
-                            certified += 1;
-                        }
-                    }
-                    (Outcome::Reached(t), Verdict::Violated | Verdict::Reachable) => {
-                        assert_eq!(t.inputs.len() as u64, r.depth, "{at}: not shortest");
-                    }
-                    (Outcome::Unknown(w), Verdict::Violated | Verdict::Reachable)
-                        if w == SPURIOUS =>
-                    {
-                        spurious += 1;
-                    }
-                    (o, v) => panic!("{at}: explicit says {v:?}, reduced IC3 says {o:?}"),
+                (Outcome::Reached(t), Verdict::Violated | Verdict::Reachable) => {
+                    assert_eq!(t.inputs.len() as u64, r.depth, "{at}: not shortest");
                 }
-                compared += 1;
+                (Outcome::Unknown(w), Verdict::Violated | Verdict::Reachable) if w == SPURIOUS => {
+                    spurious += 1;
+                }
+                (o, v) => panic!("{at}: explicit says {v:?}, reduced IC3 says {o:?}"),
             }
+            compared += 1;
         }
     }
     eprintln!(
