@@ -5,6 +5,8 @@
 //! `cargo bench -p statecheck-explicit --bench explore -- [N] [M] [THREADS]`
 //! (defaults 4 63 0 = all cores). Prints states/s and bytes stored per state.
 
+mod common;
+
 use statecheck_explicit::{verify, Options};
 
 fn model(n: usize, m: usize) -> String {
@@ -32,23 +34,7 @@ fn main() {
     let arg = |i: usize, d: usize| args.get(i).and_then(|s| s.parse().ok()).unwrap_or(d);
     let (n, m, threads) = (arg(0, 4), arg(1, 63), arg(2, 0));
     let text = model(n, m);
-    let (file, diags) = statecheck_syntax::parse(&text);
-    let (model, more) = statecheck_model::check(&file);
-    if let Some(d) = diags.iter().chain(&more).find(|d| d.is_error()) {
-        eprintln!("bench model does not check: {d:?}");
-        std::process::exit(1);
-    }
-    let Some(sys) = model.system("Bench") else {
-        eprintln!("no system Bench");
-        std::process::exit(1);
-    };
-    let program = match statecheck_ir::lower(&model, sys) {
-        Ok(p) => p,
-        Err(d) => {
-            eprintln!("lowering failed: {d:?}");
-            std::process::exit(1);
-        }
-    };
+    let program = common::bench_program(&text);
     let opts = Options {
         threads,
         ..Options::default()

@@ -11,6 +11,8 @@
 //! `cargo bench -p statecheck-explicit --bench fam -- [N] [MAX_STATES] [THREADS]`
 //! (defaults 2 2000000 0 = all cores). Prints states/s, transitions/s and bytes per state.
 
+mod common;
+
 use statecheck_explicit::{verify, Options};
 
 /// Wiring of `FamEnv` to `Fam` (the outputs of the environment chart).
@@ -64,23 +66,7 @@ fn main() {
             std::process::exit(1);
         }
     };
-    let (file, diags) = statecheck_syntax::parse(&text);
-    let (model, more) = statecheck_model::check(&file);
-    if let Some(d) = diags.iter().chain(&more).find(|d| d.is_error()) {
-        eprintln!("bench model does not check: {d:?}");
-        std::process::exit(1);
-    }
-    let Some(sys) = model.system("Bench") else {
-        eprintln!("no system Bench");
-        std::process::exit(1);
-    };
-    let program = match statecheck_ir::lower(&model, sys) {
-        Ok(p) => p,
-        Err(d) => {
-            eprintln!("lowering failed: {d:?}");
-            std::process::exit(1);
-        }
-    };
+    let program = common::bench_program(&text);
     let opts = Options {
         threads,
         max_states: Some(max_states),
