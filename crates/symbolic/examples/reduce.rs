@@ -79,7 +79,11 @@ fn main() {
     let out = match engine {
         "kind" => statecheck_symbolic::kind::kind(&r.aig, &lim()),
         "bmc" => statecheck_symbolic::bmc::bmc(&r.aig, &lim()),
-        _ => statecheck_symbolic::ic3::ic3(&r.aig, &lim()),
+        _ => {
+            let (out, st) = statecheck_symbolic::ic3::ic3_with_stats(&r.aig, &lim());
+            println!("ic3: {st:?}");
+            out
+        }
     };
     let out = r.lift(&aig, out);
     println!(

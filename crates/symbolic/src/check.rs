@@ -2,12 +2,12 @@
 //! (verdicts, counterexamples as input vectors), so that both engines share one report.
 
 use crate::aig::Aig;
-use crate::blast::{blast, Blasted};
+use crate::blast::{blast, Blasted, SharedProblem};
 use crate::engine::{Invariant, Limits, Outcome, Trace};
 use crate::scorr::{Reduction, SPURIOUS};
 use statecheck_explicit::{props, PropKind, PropResult, Verdict};
 use statecheck_ir::{Machine, Program};
-use std::sync::{Arc, Mutex};
+use std::sync::{Arc, Mutex, OnceLock};
 use std::time::{Duration, Instant};
 
 /// A SAT-based engine.
@@ -49,14 +49,18 @@ pub const QUICK: Duration = Duration::from_secs(1);
 /// Reductions of a run's problems, computed at most once each and shared by the engines.
 #[derive(Debug, Default)]
 pub struct Reductions {
+    /// One per problem, then one for the shared problem.
     slots: Vec<Mutex<Option<Option<Arc<Reduction>>>>>,
+    /// The problem shared by the program's own properties, built on first use.
+    shared: OnceLock<SharedProblem>,
 }
 
 impl Reductions {
-    /// Room for `n` problems.
+    /// Room for `n` problems (and the shared one).
     pub fn new(n: usize) -> Reductions {
         Reductions {
-            slots: (0..n).map(|_| Mutex::new(None)).collect(),
+            slots: (0..=n).map(|_| Mutex::new(None)).collect(),
+            shared: OnceLock::new(),
         }
     }
 
@@ -79,6 +83,18 @@ impl Reductions {
             Err(_) => None,
         }
     }
+
+    /// The problem shared by `bl`'s own properties.
+    fn shared(&self, bl: &Blasted) -> &SharedProblem {
+        self.shared.get_or_init(|| bl.shared_problem())
+    }
+
+    /// The reduction of the shared problem, narrowed to its bad output `k`.
+    fn get_shared(&self, bl: &Blasted, k: usize, limits: &Limits) -> Option<Arc<Reduction>> {
+        let last = self.slots.len().checked_sub(1)?;
+        let red = self.get(last, &self.shared(bl).aig, limits)?;
+        Some(Arc::new(red.with_bad(k)))
+    }
 }
 
 /// Run IC3 or k-induction on problem `i`: first on the circuit as blasted for [`QUICK`], then
@@ -93,6 +109,16 @@ pub fn run_reduced(
     reductions: &Reductions,
     limits: &Limits,
 ) -> Outcome {
+    run_with(engine, aig, limits, || reductions.get(i, aig, limits))
+}
+
+/// [`run_reduced`], with the reduction of `aig` from `reduction`.
+fn run_with(
+    engine: Engine,
+    aig: &Aig,
+    limits: &Limits,
+    reduction: impl FnOnce() -> Option<Arc<Reduction>>,
+) -> Outcome {
     if engine == Engine::Bmc {
         return engine.run(aig, limits);
     }
@@ -100,13 +126,67 @@ pub fn run_reduced(
     if !matches!(quick, Outcome::Unknown(_)) || limits.expired().is_some() {
         return quick;
     }
-    let Some(red) = reductions.get(i, aig, limits) else {
+    let Some(red) = reduction() else {
         return engine.run(aig, limits);
     };
     match red.lift(aig, engine.run(&red.aig, limits)) {
         Outcome::Unknown(why) if why == SPURIOUS => engine.run(aig, limits),
         out => out,
     }
+}
+
+/// Decide property `prop` of `bl` with `engine`: an own property on the shared problem (whose
+/// one reduction serves them all), a built-in on its own problem. An invariant is returned
+/// over the latches of [`Blasted::problem`] (what `--check-certificate` and `export aiger`
+/// number), and only when it checks there.
+fn run_property(
+    bl: &Blasted,
+    prop: usize,
+    engine: Engine,
+    limits: &Limits,
+    reductions: &Reductions,
+) -> (Outcome, Option<(Aig, Invariant)>) {
+    let shared = reductions.shared(bl);
+    let Some(k) = shared.bad_index.get(prop).copied().flatten() else {
+        let aig = bl.problem(prop);
+        return match run_reduced(engine, &aig, prop, reductions, limits) {
+            Outcome::Proved(Some(inv)) => (Outcome::Proved(None), Some((aig, inv))),
+            out => (out, None),
+        };
+    };
+    let aig = shared.with_bad(k);
+    match run_with(engine, &aig, limits, || {
+        reductions.get_shared(bl, k, limits)
+    }) {
+        Outcome::Proved(Some(inv)) => {
+            let (own, kept) = bl.problem_with_latches(prop);
+
+            let cert = renumber(&inv, &shared.latch_origin, &kept)
+                .filter(|inv| crate::cert::check(&own, inv).is_ok())
+                .map(|inv| (own, inv));
+            (Outcome::Proved(None), cert)
+        }
+        out => (out, None),
+    }
+}
+
+/// An invariant over latches numbered by `from` (index in a base circuit of each latch) over
+/// latches numbered by `to`, without the clauses that mention a latch `to` lacks (facts about
+/// other properties' latches; the caller checks that the rest is still an invariant).
+fn renumber(inv: &Invariant, from: &[usize], to: &[usize]) -> Option<Invariant> {
+    let mut base_to = std::collections::HashMap::with_capacity(to.len());
+    for (j, &b) in to.iter().enumerate() {
+        base_to.insert(b, j);
+    }
+    let kept: Invariant = inv
+        .iter()
+        .filter_map(|c| {
+            c.iter()
+                .map(|&(j, v)| Some((*base_to.get(from.get(j)?)?, v)))
+                .collect()
+        })
+        .collect();
+    Some(kept)
 }
 
 /// The answer for one property.
@@ -151,8 +231,7 @@ pub fn decide(
     reductions: &Reductions,
 ) -> SymResult {
     let start = Instant::now();
-    let aig = bl.problem(prop);
-    let out = run_reduced(engine, &aig, prop, reductions, limits);
+    let (out, invariant) = run_property(bl, prop, engine, limits, reductions);
     let sig = &bl.props[prop];
     let reach = sig.reachable;
     let mut r = PropResult {
@@ -164,7 +243,6 @@ pub fn decide(
         error: None,
         note: None,
     };
-    let mut invariant = None;
     let mut reason = None;
     match out {
         Outcome::Reached(t) => {
@@ -178,13 +256,12 @@ pub fn decide(
             r.error = replay_error(p, &vectors);
             r.counterexample = Some(vectors);
         }
-        Outcome::Proved(inv) => {
+        Outcome::Proved(_) => {
             r.verdict = if reach {
                 Verdict::Unreachable
             } else {
                 Verdict::Proved
             };
-            invariant = inv.map(|i| (aig, i));
         }
         Outcome::Bounded(k) => {
             r.verdict = Verdict::Bounded;

@@ -20,3 +20,4 @@ pub mod ic3;
 pub mod kind;
 pub mod sat;
 pub mod scorr;
+pub mod ternary;

@@ -49,6 +49,9 @@ pub struct Meta {
     pub time_s: Option<f64>,
     /// Why the verdict is `unknown`.
     pub reason: Option<String>,
+    /// `--engine auto`: seconds from the start of the run to the verdict (the engines run side
+    /// by side, so this, not `time_s`, is when the user had the answer).
+    pub decided_at_s: Option<f64>,
 }
 
 /// The JSON object of `statecheck verify --json`.
@@ -72,6 +75,9 @@ pub fn json(p: &Program, source: &str, rep: &Report, cexs: &[Option<Cex>], meta:
                 "time_s": m.and_then(|m| m.time_s).unwrap_or(s.time.as_secs_f64()),
                 "counterexample": c.as_ref().and_then(|c| c.path.clone()),
             });
+            if let Some(at) = m.and_then(|m| m.decided_at_s) {
+                o["decided_at_s"] = json!(at);
+            }
             if let Some(c) = c {
                 o["tick"] = json!(c.tick);
                 if let Some(m) = &c.mismatch {

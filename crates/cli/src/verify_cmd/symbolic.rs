@@ -3,7 +3,7 @@
 
 use super::report::Meta;
 use anyhow::{bail, Context, Result};
-use statecheck_explicit::{Options, PropResult, Report, Stats, Verdict};
+use statecheck_explicit::{Options, PropKind, PropResult, Report, Stats, Verdict};
 use statecheck_ir::Program;
 use statecheck_symbolic::aig::Aig;
 use statecheck_symbolic::check::{decide, problems, run_reduced, Engine, Reductions, SymResult};
@@ -64,6 +64,7 @@ fn meta_of(engine: &'static str, s: &SymResult) -> Meta {
     Meta {
         engine,
         time_s: Some(s.time.as_secs_f64()),
+        decided_at_s: None,
         reason: s.reason.clone(),
     }
 }
@@ -176,9 +177,16 @@ pub fn run_auto(p: &Program, opts: &Options) -> Result<Run> {
             } else {
                 &AUTO_BUDGETS
             };
+            // IC3 and k-induction take the `reachable` properties last: their witnesses are
+            // BMC's to find, and a long search for one would hold up the proofs behind it.
+            let mut order: Vec<usize> = (0..idx.len()).collect();
+            if engine != Engine::Bmc {
+                order.sort_by_key(|&i| idx[i].1 == PropKind::Reachable);
+            }
             'passes: for (pass, budget) in budgets.iter().enumerate() {
                 let last = pass + 1 == budgets.len();
-                for (i, &(pi, kind)) in idx.iter().enumerate() {
+                for &i in &order {
+                    let (pi, kind) = idx[i];
                     if flags[i].load(Ordering::Relaxed) {
                         continue;
                     }
@@ -231,6 +239,7 @@ pub fn run_auto(p: &Program, opts: &Options) -> Result<Run> {
                             engine: "explicit",
                             time_s: Some(t.as_secs_f64()),
                             reason: None,
+                            decided_at_s: Some(started.elapsed().as_secs_f64()),
                         };
                         if definitive(r) && got[i].is_none() {
                             flags[i].store(true, Ordering::Relaxed);
@@ -243,7 +252,8 @@ pub fn run_auto(p: &Program, opts: &Options) -> Result<Run> {
                 }
             }
             Msg::Symbolic(i, engine, s) => {
-                let m = meta_of(engine, &s);
+                let mut m = meta_of(engine, &s);
+                m.decided_at_s = Some(started.elapsed().as_secs_f64());
                 if definitive(&s.result) && got[i].is_none() {
                     flags[i].store(true, Ordering::Relaxed);
                     got[i] = Some((s.result, m, s.invariant));
@@ -287,6 +297,7 @@ pub fn run_auto(p: &Program, opts: &Options) -> Result<Run> {
                             engine: "auto",
                             time_s: Some(started.elapsed().as_secs_f64()),
                             reason: Some("no engine answered within the limits".into()),
+                            decided_at_s: None,
                         },
                     )
                 });

@@ -283,6 +283,11 @@ impl Blasted {
     /// The verification problem of property `prop` (index into [`Blasted::props`]): a copy of
     /// the circuit with its bad output and constraint, reduced to its cone of influence.
     pub fn problem(&self, prop: usize) -> Aig {
+        self.problem_with_latches(prop).0
+    }
+
+    /// [`Blasted::problem`], with the index in [`Blasted::aig`] of each of its latches.
+    pub fn problem_with_latches(&self, prop: usize) -> (Aig, Vec<usize>) {
         let sig = &self.props[prop];
         let mut g = self.aig.clone();
         let any_err = g.or_all(self.errs);
@@ -294,6 +299,59 @@ impl Blasted {
         g.bad = vec![sig.bad];
         g.bad_names = vec![Some(sig.name.clone())];
         g.constraints = if c == Lit::TRUE { vec![] } else { vec![c] };
-        g.reduced()
+        g.reduced_with_latches()
+    }
+
+    /// The problem shared by the program's own properties (not the built-ins: each of those
+    /// allows its own run-time error, so their constraints differ): every own property's bad
+    /// output, in [`Blasted::props`] order, under the common constraint, reduced to their joint
+    /// cone of influence. With it: per property, the index of its bad output (`None` for a
+    /// built-in), and the index in [`Blasted::aig`] of each latch. One reduction by signal
+    /// correspondence of this circuit serves every own property: the equalities it proves hold
+    /// on every valid trace, whichever output is watched.
+    pub fn shared_problem(&self) -> SharedProblem {
+        let mut g = self.aig.clone();
+        let any_err = g.or_all(self.errs);
+        let c = g.and(self.assume, !any_err);
+        let mut bad_index = Vec::with_capacity(self.props.len());
+        g.bad.clear();
+        g.bad_names.clear();
+        for sig in &self.props {
+            if sig.builtin.is_some() {
+                bad_index.push(None);
+                continue;
+            }
+            bad_index.push(Some(g.bad.len()));
+            g.bad.push(sig.bad);
+            g.bad_names.push(Some(sig.name.clone()));
+        }
+        g.constraints = if c == Lit::TRUE { vec![] } else { vec![c] };
+        let (aig, latch_origin) = g.reduced_with_latches();
+        SharedProblem {
+            aig,
+            bad_index,
+            latch_origin,
+        }
+    }
+}
+
+/// The circuit of all own properties of a program ([`Blasted::shared_problem`]).
+#[derive(Clone, Debug)]
+pub struct SharedProblem {
+    /// The circuit, with one bad output per own property.
+    pub aig: Aig,
+    /// Per property of [`Blasted::props`], the index of its bad output (`None`: a built-in).
+    pub bad_index: Vec<Option<usize>>,
+    /// The index in [`Blasted::aig`] of each latch.
+    pub latch_origin: Vec<usize>,
+}
+
+impl SharedProblem {
+    /// The circuit with only bad output `k` (same latches, numbered alike).
+    pub fn with_bad(&self, k: usize) -> Aig {
+        let mut g = self.aig.clone();
+        g.bad = vec![self.aig.bad[k]];
+        g.bad_names = vec![self.aig.bad_names.get(k).cloned().flatten()];
+        g
     }
 }

@@ -128,6 +128,14 @@ pub fn reduce(aig: &Aig, limits: &Limits) -> Result<Reduction, String> {
 pub const SPURIOUS: &str = "the reduced circuit's counterexample does not replay on the original";
 
 impl Reduction {
+    /// The reduction with only bad output `k` (of a circuit of several properties).
+    pub fn with_bad(&self, k: usize) -> Reduction {
+        let mut r = self.clone();
+        r.aig.bad = vec![self.aig.bad[k]];
+        r.aig.bad_names = vec![self.aig.bad_names.get(k).cloned().flatten()];
+        r
+    }
+
     /// An engine's answer on the reduced circuit, read on `original` (the circuit it was
     /// reduced from): a counterexample must replay there, and an invariant is kept only when,
     /// translated to the original latches and joined with the proved latch equalities, it
