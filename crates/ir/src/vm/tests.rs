@@ -163,3 +163,44 @@ fn range_checks_are_dropped_only_when_they_cannot_fail() {
         }
     }
 }
+
+/// A chart whose two transitions are triggered by the same event tests the event once when it
+/// is absent: the first test's jump is threaded past the second (which it decides), and a tick
+/// without the event runs the started test, the switch, one event test and `End`.
+#[test]
+fn an_absent_event_is_tested_once() {
+    let p = program(
+        "chart Counter {
+  input event inc;
+  output c: int[0..7] = 0;
+  initial Run;
+  state Run {
+    on inc [c < 7] / { c += 1; };
+    on inc / { c = 0; };
+  }
+}
+system S { instance k: Counter; }",
+    );
+    let code = p.code();
+    let inc = p.inputs[0].slot as u16;
+    for op in &code.ops {
+        if let Op::Jz { a, t } = *op {
+            if a == inc {
+                let target = code.ops[t as usize];
+                assert!(
+                    !matches!(target, Op::Jz { a, .. } if a == inc),
+                    "{op:?} jumps to {target:?}"
+                );
+            }
+        }
+    }
+    let mut regs = code.init_regs.clone();
+    let mut counts = vec![0u64; code.ops.len()];
+    // The initialisation tick, then one without the event.
+    for _ in 0..2 {
+        run_counting(code, &mut regs, code.step, &mut counts).expect("no run-time error");
+    }
+    counts.iter_mut().for_each(|c| *c = 0);
+    run_counting(code, &mut regs, code.step, &mut counts).expect("no run-time error");
+    assert_eq!(counts.iter().sum::<u64>(), 4, "{:?}", code.ops);
+}
