@@ -7,7 +7,7 @@ use crate::inputs::InputSpace;
 use crate::pack::{Key, Packer};
 use crate::props::{Check, Spec};
 use crate::table::{shard_of, SHARDS};
-use statecheck_ir::{ExprId, Machine, Program, RuntimeError};
+use statecheck_ir::{Machine, Prepared, Program, RuntimeError};
 
 /// A successor found while expanding: its key and how it was reached.
 pub(crate) struct Cand<K> {
@@ -87,16 +87,17 @@ impl Expander<'_> {
         };
         let n = sp.slots.len();
         // Assumes evaluated on every transition: all of them when the vectors are not listed.
-        let mut per_tick: Vec<ExprId> = sp.mixed_assumes.clone();
+        let mut per_tick: Vec<Prepared> = sp.mixed_assumes.iter().map(|&a| p.prepare(a)).collect();
         if sp.listed().is_none() {
-            per_tick.extend(&sp.input_assumes);
+            per_tick.extend(sp.input_assumes.iter().map(|&a| p.prepare(a)));
         }
+        let state_assumes: Vec<Prepared> = sp.state_assumes.iter().map(|&a| p.prepare(a)).collect();
         for (j, key) in states.iter().enumerate() {
             let pos = (first_pos + j) as u32;
             self.packer.unpack(key, &mut words, &mut state);
-            if !sp.state_assumes.is_empty() {
+            if !state_assumes.is_empty() {
                 m.load_state(&state);
-                if !sp.state_assumes.iter().all(|a| holds(&mut m, *a)) {
+                if !state_assumes.iter().all(|a| m.holds(*a)) {
                     continue;
                 }
             }
@@ -108,7 +109,7 @@ impl Expander<'_> {
                         for (&s, &x) in sp.slots.iter().zip(v) {
                             m.set(s, x);
                         }
-                        if per_tick.iter().all(|a| holds(&mut m, *a)) {
+                        if per_tick.iter().all(|a| m.holds(*a)) {
                             let t = Tick {
                                 key,
                                 pos,
@@ -126,7 +127,7 @@ impl Expander<'_> {
                             m.set(s, x);
                         }
                         sp.advance(&mut inp);
-                        if per_tick.iter().all(|a| holds(&mut m, *a)) {
+                        if per_tick.iter().all(|a| m.holds(*a)) {
                             let t = Tick {
                                 key,
                                 pos,
@@ -293,15 +294,10 @@ pub(crate) fn decides(m: &mut Machine, check: Check) -> bool {
         // The invariant first: it usually holds, and then `assuming` need not be evaluated
         // (both are pure, so the order does not change the answer).
         Check::Invariant { expr, assuming } => {
-            !holds(m, expr) && assuming.is_none_or(|a| holds(m, a))
+            !m.holds(expr.code) && assuming.is_none_or(|a| m.holds(a.code))
         }
-        Check::Reachable { expr } => holds(m, expr),
-        Check::Ok { ok } => !holds(m, ok),
+        Check::Reachable { expr } => m.holds(expr.code),
+        Check::Ok { ok } => !m.holds(ok.code),
         Check::Builtin(_) => false,
     }
-}
-
-/// True when `e` evaluates to non-zero (false when its evaluation fails).
-fn holds(m: &mut Machine, e: ExprId) -> bool {
-    matches!(statecheck_ir::eval(&m.program().nodes, m.slots(), e), Ok(v) if v != 0)
 }

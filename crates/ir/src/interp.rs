@@ -61,6 +61,16 @@ impl RuntimeErrorKind {
 }
 
 impl Program {
+    /// Expression `e` ready for [`Machine::holds`]: its compiled code when it has some (the
+    /// program's assumptions, their `&&` conjuncts, properties and active-state expressions),
+    /// so that evaluating it repeatedly costs no look-up.
+    pub fn prepare(&self, e: ExprId) -> Prepared {
+        match self.code().exprs.get(&e) {
+            Some(seg) if self.code().runnable => Prepared(PreparedKind::Code(*seg)),
+            _ => Prepared(PreparedKind::Tree(e)),
+        }
+    }
+
     /// Render a run-time error with its site: what, where in the model, which instance/state.
     pub fn describe_error(&self, e: &RuntimeError) -> String {
         match self.sites.get(e.site as usize) {
@@ -178,6 +188,21 @@ impl<'p> Machine<'p> {
         eval(&self.program.nodes, &self.regs[..self.n_slots], e)
     }
 
+    /// True when the prepared expression evaluates to non-zero on the current slots; false
+    /// when it is zero or its evaluation fails (the reading of properties and assumptions).
+    #[inline]
+    pub fn holds(&mut self, e: Prepared) -> bool {
+        match e.0 {
+            PreparedKind::Code(seg) => {
+                crate::vm::run(self.code, &mut self.regs, &mut self.stack, None, seg.start).is_ok()
+                    && self.regs[seg.reg as usize] != 0
+            }
+            PreparedKind::Tree(e) => {
+                matches!(eval(&self.program.nodes, &self.regs[..self.n_slots], e), Ok(v) if v != 0)
+            }
+        }
+    }
+
     /// Run one tick with the inputs currently in the input slots.
     #[inline]
     pub fn step(&mut self) -> Result<(), RuntimeError> {
@@ -209,6 +234,18 @@ impl<'p> Machine<'p> {
         self.regs[..self.n_slots].copy_from_slice(&slots);
         r
     }
+}
+
+/// An expression prepared by [`Machine::prepare`] for the machines of one program.
+#[derive(Clone, Copy, Debug)]
+pub struct Prepared(PreparedKind);
+
+#[derive(Clone, Copy, Debug)]
+enum PreparedKind {
+    /// Compiled: run this segment of the register code.
+    Code(crate::vm::Segment),
+    /// Not compiled: walk the expression tree.
+    Tree(ExprId),
 }
 
 /// Evaluate expression `e` over `slots` (for read-only views such as trace rendering).
