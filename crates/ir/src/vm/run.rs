@@ -121,9 +121,11 @@ fn exec(
         // return address (the index after a `Call`, which is never last), or the index after
         // an instruction that is not last (the last one, `End` or `Ret`, does not fall
         // through).
-        let op = *unsafe { ops.get_unchecked(pc) };
+        // Matched through the reference, so that each arm loads only its own operands (a copy
+        // made the dispatch decode every field of every instruction).
+        let op = unsafe { ops.get_unchecked(pc) };
         pc += 1;
-        match op {
+        match *op {
             Op::Add { d, a, b } => r!(d) = checked!(r!(a).checked_add(r!(b))),
             Op::Sub { d, a, b } => r!(d) = checked!(r!(a).checked_sub(r!(b))),
             Op::Mul { d, a, b } => r!(d) = checked!(r!(a).checked_mul(r!(b))),
