@@ -3,7 +3,8 @@
 //! A jump to an unconditional jump goes straight to the final target; a conditional jump to a
 //! conditional jump whose outcome it implies (`Jz a` to `Jz a`, the typical test of an absent
 //! event repeated by each transition of a state) goes straight to where that one leads; a jump
-//! to `End` or `Ret` becomes that instruction; a (conditional) jump to the next instruction and a call of a
+//! to `End` or `Ret` becomes that instruction; a switch with one case placed right after it
+//! becomes a compare-and-branch; a (conditional) jump to the next instruction and a call of a
 //! procedure that returns at once are removed. Removing instructions renumbers the code: every
 //! jump and call target, switch table entry, the step entry and the segment starts are
 //! remapped. Repeated until nothing changes.
@@ -88,6 +89,14 @@ fn jump_regs(mut op: Op, mut f: impl FnMut(Reg)) {
 fn thread(c: &mut Compiled) {
     for pc in 0..c.ops.len() {
         let mut op = c.ops[pc];
+        // A switch with one case that follows it is a test of that case: `a` is 0 or the
+        // switch goes to its end.
+        if let Op::Switch { a, len: 1, table } = op {
+            let (end, case) = (c.tables[table as usize], c.tables[table as usize + 1]);
+            if case as usize == pc + 1 {
+                op = Op::JNeI { a, imm: 0, t: end };
+            }
+        }
         let orig = op;
         if let Some(t) = op.target_mut() {
             *t = resolve(&c.ops, *t);

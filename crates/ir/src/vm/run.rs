@@ -173,14 +173,16 @@ fn exec(
             }
             Op::Check { a, bounds } => {
                 let v = r!(a);
-                let (lo, hi) = code.bounds[bounds as usize];
+                // SAFETY: `Code::validate` asserted `bounds < code.bounds.len()`.
+                let (lo, hi) = *unsafe { code.bounds.get_unchecked(bounds as usize) };
                 if v < lo || v > hi {
                     return Err(fail(code, pc, K::Range { value: v, lo, hi }));
                 }
             }
             Op::CheckMov { d, a, bounds } => {
                 let v = r!(a);
-                let (lo, hi) = code.bounds[bounds as usize];
+                // SAFETY: `Code::validate` asserted `bounds < code.bounds.len()`.
+                let (lo, hi) = *unsafe { code.bounds.get_unchecked(bounds as usize) };
                 if v < lo || v > hi {
                     return Err(fail(code, pc, K::Range { value: v, lo, hi }));
                 }
@@ -206,7 +208,10 @@ fn exec(
             Op::Switch { a, len, table } => {
                 let v = r!(a) as u64;
                 let k = if v < len as u64 { 1 + v as usize } else { 0 };
-                pc = tables[table as usize + k] as usize;
+                debug_assert!(table as usize + k < tables.len());
+                // SAFETY: `k <= len`, and `Code::validate` asserted that the switch's entries
+                // `table..=table + len` are in `code.tables`.
+                pc = *unsafe { tables.get_unchecked(table as usize + k) } as usize;
             }
             Op::Call { t } => {
                 stack[sp] = pc as u32;
