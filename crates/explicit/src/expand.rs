@@ -104,11 +104,7 @@ impl Expander<'_> {
             match sp.listed() {
                 Some((flat, count)) => {
                     for idx in 0..count {
-                        m.load_state(&state);
-                        let v = &flat[idx * n..idx * n + n];
-                        for (&s, &x) in sp.slots.iter().zip(v) {
-                            m.set(s, x);
-                        }
+                        m.load(&state, &flat[idx * n..idx * n + n]);
                         if per_tick.iter().all(|a| m.holds(*a)) {
                             let t = Tick {
                                 key,
@@ -122,10 +118,7 @@ impl Expander<'_> {
                 None => {
                     sp.first(&mut inp);
                     for idx in 0..sp.count as u64 {
-                        m.load_state(&state);
-                        for (&s, &x) in sp.slots.iter().zip(&inp) {
-                            m.set(s, x);
-                        }
+                        m.load(&state, &inp);
                         sp.advance(&mut inp);
                         if per_tick.iter().all(|a| m.holds(*a)) {
                             let t = Tick {

@@ -119,6 +119,8 @@ pub struct Machine<'p> {
     n_slots: usize,
     /// Coverage counters, if enabled.
     coverage: Option<Vec<u64>>,
+    /// True when input `i` is slot `n_state + i` (see [`Machine::load`]).
+    inputs_follow_state: bool,
 }
 
 impl<'p> Machine<'p> {
@@ -132,6 +134,11 @@ impl<'p> Machine<'p> {
             stack: vec![0; code.max_depth],
             n_slots: program.slots.len(),
             coverage: None,
+            inputs_follow_state: program
+                .inputs
+                .iter()
+                .enumerate()
+                .all(|(i, inp)| inp.slot as usize == program.n_state + i),
         }
     }
 
@@ -163,6 +170,21 @@ impl<'p> Machine<'p> {
     /// Overwrite the persistent state.
     pub fn load_state(&mut self, state: &[i64]) {
         self.regs[..self.program.n_state].copy_from_slice(state);
+    }
+
+    /// Overwrite the persistent state and the tick's inputs (`inputs` in [`Program::inputs`]
+    /// order): one copy when the input slots follow the state, as the layout places them.
+    #[inline]
+    pub fn load(&mut self, state: &[i64], inputs: &[i64]) {
+        let ns = self.program.n_state;
+        self.regs[..ns].copy_from_slice(state);
+        if self.inputs_follow_state {
+            self.regs[ns..ns + inputs.len()].copy_from_slice(inputs);
+        } else {
+            for (inp, &x) in self.program.inputs.iter().zip(inputs) {
+                self.regs[inp.slot as usize] = x;
+            }
+        }
     }
 
     /// Set a slot (normally an input slot) to a value.
