@@ -138,6 +138,7 @@ impl Expander<'_> {
 
     /// One tick from the loaded state with the inputs set: record what it decides and the
     /// successor.
+    #[inline(always)]
     fn transition<K: Key>(
         &self,
         m: &mut Machine,
