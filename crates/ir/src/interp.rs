@@ -172,14 +172,16 @@ impl<'p> Machine<'p> {
         self.regs[..self.program.n_state].copy_from_slice(state);
     }
 
-    /// Overwrite the persistent state and the tick's inputs (`inputs` in [`Program::inputs`]
-    /// order): one copy when the input slots follow the state, as the layout places them.
+    /// Overwrite the persistent state and the tick's inputs (`inputs` holds one value per
+    /// input, in [`Program::inputs`] order): one copy when the input slots follow the state,
+    /// as the layout places them.
     #[inline]
     pub fn load(&mut self, state: &[i64], inputs: &[i64]) {
         let ns = self.program.n_state;
         self.regs[..ns].copy_from_slice(state);
         if self.inputs_follow_state {
-            self.regs[ns..ns + inputs.len()].copy_from_slice(inputs);
+            let k = self.program.inputs.len();
+            self.regs[ns..ns + k].copy_from_slice(&inputs[..k]);
         } else {
             for (inp, &x) in self.program.inputs.iter().zip(inputs) {
                 self.regs[inp.slot as usize] = x;
