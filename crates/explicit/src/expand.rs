@@ -7,7 +7,7 @@ use crate::inputs::InputSpace;
 use crate::pack::{Key, Packer};
 use crate::props::{Check, Spec};
 use crate::table::{shard_of, SHARDS};
-use statecheck_ir::{ExprId, Machine, Program, RuntimeError};
+use statecheck_ir::{Machine, Prepared, Program, RuntimeError};
 
 /// A successor found while expanding: its key and how it was reached.
 pub(crate) struct Cand<K> {
@@ -87,28 +87,25 @@ impl Expander<'_> {
         };
         let n = sp.slots.len();
         // Assumes evaluated on every transition: all of them when the vectors are not listed.
-        let mut per_tick: Vec<ExprId> = sp.mixed_assumes.clone();
+        let mut per_tick: Vec<Prepared> = sp.mixed_assumes.iter().map(|&a| p.prepare(a)).collect();
         if sp.listed().is_none() {
-            per_tick.extend(&sp.input_assumes);
+            per_tick.extend(sp.input_assumes.iter().map(|&a| p.prepare(a)));
         }
+        let state_assumes: Vec<Prepared> = sp.state_assumes.iter().map(|&a| p.prepare(a)).collect();
         for (j, key) in states.iter().enumerate() {
             let pos = (first_pos + j) as u32;
             self.packer.unpack(key, &mut words, &mut state);
-            if !sp.state_assumes.is_empty() {
+            if !state_assumes.is_empty() {
                 m.load_state(&state);
-                if !sp.state_assumes.iter().all(|a| holds(&mut m, *a)) {
+                if !state_assumes.iter().all(|a| m.holds(*a)) {
                     continue;
                 }
             }
             match sp.listed() {
                 Some((flat, count)) => {
                     for idx in 0..count {
-                        m.load_state(&state);
-                        let v = &flat[idx * n..idx * n + n];
-                        for (&s, &x) in sp.slots.iter().zip(v) {
-                            m.set(s, x);
-                        }
-                        if per_tick.iter().all(|a| holds(&mut m, *a)) {
+                        m.load(&state, &flat[idx * n..idx * n + n]);
+                        if per_tick.iter().all(|a| m.holds(*a)) {
                             let t = Tick {
                                 key,
                                 pos,
@@ -121,12 +118,9 @@ impl Expander<'_> {
                 None => {
                     sp.first(&mut inp);
                     for idx in 0..sp.count as u64 {
-                        m.load_state(&state);
-                        for (&s, &x) in sp.slots.iter().zip(&inp) {
-                            m.set(s, x);
-                        }
+                        m.load(&state, &inp);
                         sp.advance(&mut inp);
-                        if per_tick.iter().all(|a| holds(&mut m, *a)) {
+                        if per_tick.iter().all(|a| m.holds(*a)) {
                             let t = Tick {
                                 key,
                                 pos,
@@ -144,6 +138,7 @@ impl Expander<'_> {
 
     /// One tick from the loaded state with the inputs set: record what it decides and the
     /// successor.
+    #[inline(always)]
     fn transition<K: Key>(
         &self,
         m: &mut Machine,
@@ -293,15 +288,10 @@ pub(crate) fn decides(m: &mut Machine, check: Check) -> bool {
         // The invariant first: it usually holds, and then `assuming` need not be evaluated
         // (both are pure, so the order does not change the answer).
         Check::Invariant { expr, assuming } => {
-            !holds(m, expr) && assuming.is_none_or(|a| holds(m, a))
+            !m.holds(expr.code) && assuming.is_none_or(|a| m.holds(a.code))
         }
-        Check::Reachable { expr } => holds(m, expr),
-        Check::Ok { ok } => !holds(m, ok),
+        Check::Reachable { expr } => m.holds(expr.code),
+        Check::Ok { ok } => !m.holds(ok.code),
         Check::Builtin(_) => false,
     }
-}
-
-/// True when `e` evaluates to non-zero (false when its evaluation fails).
-fn holds(m: &mut Machine, e: ExprId) -> bool {
-    matches!(statecheck_ir::eval(&m.program().nodes, m.slots(), e), Ok(v) if v != 0)
 }

@@ -17,7 +17,7 @@ struct Field {
     mask: u64,
 }
 
-/// A field of non-zero width, for the integer fast path.
+/// A field of non-zero width, for the integer fast paths: where it sits in the 64-bit words.
 #[derive(Clone, Copy, Debug)]
 struct Live {
     /// Index of the slot in the state.
@@ -25,14 +25,24 @@ struct Live {
     lo: i64,
     offset: u32,
     mask: u64,
+    /// The word of its first bit (0 or 1 in a 128-bit key).
+    word: u32,
+    /// Its first bit within that word.
+    sh: u32,
+    /// True when it continues into the next word (then `sh > 0`).
+    spill: bool,
 }
 
 /// Packs and unpacks the persistent state of a program.
 #[derive(Clone, Debug)]
 pub struct Packer {
     fields: Vec<Field>,
-    /// The fields of non-zero width (constant slots need no bits and no work when packing).
+    /// The fields of non-zero width (constant slots need no bits and no work when packing),
+    /// in bit order.
     live: Vec<Live>,
+    /// `live[..split.0]` lie within word 0, `live[split.0..split.1]` straddle words 0 and 1
+    /// (at most one), `live[split.1..]` lie within word 1 or later.
+    split: (usize, usize),
     /// Total bits of a packed vector.
     pub bits: u32,
     /// 64-bit words of a packed vector.
@@ -61,7 +71,7 @@ impl Packer {
     }
 
     fn with_fields(fields: Vec<Field>, bits: u32) -> Packer {
-        let live = fields
+        let live: Vec<Live> = fields
             .iter()
             .enumerate()
             .filter(|(_, f)| f.width > 0)
@@ -70,10 +80,16 @@ impl Packer {
                 lo: f.lo,
                 offset: f.offset,
                 mask: f.mask,
+                word: f.offset / 64,
+                sh: f.offset % 64,
+                spill: f.offset % 64 + f.width > 64,
             })
             .collect();
+        let within0 = live.iter().take_while(|f| f.word == 0 && !f.spill).count();
+        let straddle = live[within0..].iter().take_while(|f| f.word == 0).count();
         Packer {
             fields,
+            split: (within0, within0 + straddle),
             live,
             bits,
             words: (bits as usize).div_ceil(64).max(1),
@@ -127,15 +143,22 @@ impl Packer {
     }
 
     /// Pack a state of at most 128 bits straight into an integer (no word buffer): the hot
-    /// path of the integer keys. Fields are in slot order, so the loop is branch-free.
+    /// path of the 128-bit keys, one 64-bit word at a time (variable 128-bit shifts are slow).
     #[inline]
     fn pack_u128(&self, state: &[i64]) -> u128 {
-        let mut acc = 0u128;
-        for f in &self.live {
+        let (w0, w1) = (
+            pack_word(&self.live[..self.split.0], state),
+            pack_word(&self.live[self.split.1..], state),
+        );
+        let (mut w0, mut w1) = (w0, w1);
+        // The field that straddles the two words, if any (then `0 < sh < 64`).
+        for f in &self.live[self.split.0..self.split.1] {
             let v = state.get(f.slot as usize).copied().unwrap_or(f.lo);
-            acc |= u128::from(v.wrapping_sub(f.lo) as u64 & f.mask) << (f.offset & 127);
+            let x = v.wrapping_sub(f.lo) as u64 & f.mask;
+            w0 |= x << f.sh;
+            w1 |= x >> ((64 - f.sh) & 63);
         }
-        acc
+        u128::from(w0) | (u128::from(w1) << 64)
     }
 
     /// Pack a state of at most 64 bits straight into an integer.
@@ -159,14 +182,36 @@ impl Packer {
         }
     }
 
-    /// Unpack a vector of at most 128 bits.
+    /// Unpack a vector of at most 128 bits (its live fields; the others are constant).
     #[inline]
     fn unpack_u128(&self, packed: u128, state: &mut [i64]) {
         for (f, v) in self.fields.iter().zip(state.iter_mut()) {
-            let x = (packed >> (f.offset & 127)) as u64 & f.mask;
-            *v = f.lo.wrapping_add(x as i64);
+            *v = f.lo;
+        }
+        let w = [packed as u64, (packed >> 64) as u64];
+        for f in &self.live {
+            let lo = w[(f.word & 1) as usize] >> f.sh;
+            let hi = if f.spill {
+                w[1] << ((64 - f.sh) & 63)
+            } else {
+                0
+            };
+            if let Some(v) = state.get_mut(f.slot as usize) {
+                *v = f.lo.wrapping_add(((lo | hi) & f.mask) as i64);
+            }
         }
     }
+}
+
+/// The fields of one 64-bit word (each within it, at bit `sh`), packed.
+#[inline]
+fn pack_word(fields: &[Live], state: &[i64]) -> u64 {
+    let mut acc = 0u64;
+    for f in fields {
+        let v = state.get(f.slot as usize).copied().unwrap_or(f.lo);
+        acc |= (v.wrapping_sub(f.lo) as u64 & f.mask) << (f.sh & 63);
+    }
+    acc
 }
 
 #[inline]
@@ -357,6 +402,8 @@ mod tests {
                 (-1, (1 << 40) - 2),
                 (0, (1 << 40) - 1),
             ],
+            // A field ending exactly at bit 64, then one starting exactly there.
+            vec![(0, (1 << 60) - 1), (0, 15), (3, 3), (0, (1 << 62) - 1)],
         ] {
             let p = packer(&ranges);
             let mut words = vec![0; p.words];

@@ -1,7 +1,7 @@
 //! The properties one run checks: the system's own (invariants, reachability, bounded response,
 //! observers) and the built-in ones every model has.
 
-use statecheck_ir::{ExprId, Program, PropertyKind};
+use statecheck_ir::{ExprId, Prepared, Program, PropertyKind};
 
 /// Names of the built-in properties, violated by run-time errors.
 pub const BUILTINS: [&str; 3] = ["no_range_overflow", "no_division_by_zero", "no_bad_shift"];
@@ -34,18 +34,31 @@ impl PropKind {
     }
 }
 
+/// An expression of a property, and its compiled form.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Expr {
+    pub id: ExprId,
+    pub code: Prepared,
+}
+
+impl Expr {
+    fn new(program: &Program, id: ExprId) -> Expr {
+        Expr {
+            id,
+            code: program.prepare(id),
+        }
+    }
+}
+
 /// How a property is decided on one transition.
 #[derive(Clone, Copy, Debug)]
 pub(crate) enum Check {
     /// Violated when `assuming` holds and `expr` does not.
-    Invariant {
-        expr: ExprId,
-        assuming: Option<ExprId>,
-    },
+    Invariant { expr: Expr, assuming: Option<Expr> },
     /// Reached when `expr` holds.
-    Reachable { expr: ExprId },
+    Reachable { expr: Expr },
     /// Violated when `ok` does not hold (respond monitors, observers).
-    Ok { ok: ExprId },
+    Ok { ok: Expr },
     /// Violated by a run-time error whose built-in property has this name.
     Builtin(&'static str),
 }
@@ -54,9 +67,12 @@ impl Check {
     /// The expressions it evaluates.
     fn exprs(self) -> Vec<ExprId> {
         match self {
-            Check::Invariant { expr, assuming } => std::iter::once(expr).chain(assuming).collect(),
-            Check::Reachable { expr } => vec![expr],
-            Check::Ok { ok } => vec![ok],
+            Check::Invariant { expr, assuming } => std::iter::once(expr)
+                .chain(assuming)
+                .map(|e| e.id)
+                .collect(),
+            Check::Reachable { expr } => vec![expr.id],
+            Check::Ok { ok } => vec![ok.id],
             Check::Builtin(_) => Vec::new(),
         }
     }
@@ -100,6 +116,7 @@ pub(crate) fn mark_per_state(
 
 /// Every property of a program: its own in declaration order, then the built-ins.
 pub fn all(program: &Program) -> Vec<Spec> {
+    let e = |id: &ExprId| Expr::new(program, *id);
     let mut out: Vec<Spec> = program
         .properties
         .iter()
@@ -108,15 +125,15 @@ pub fn all(program: &Program) -> Vec<Spec> {
                 PropertyKind::Invariant { expr, assuming } => (
                     PropKind::Invariant,
                     Check::Invariant {
-                        expr: *expr,
-                        assuming: *assuming,
+                        expr: e(expr),
+                        assuming: assuming.as_ref().map(e),
                     },
                 ),
                 PropertyKind::Reachable { expr } => {
-                    (PropKind::Reachable, Check::Reachable { expr: *expr })
+                    (PropKind::Reachable, Check::Reachable { expr: e(expr) })
                 }
-                PropertyKind::Respond { ok, .. } => (PropKind::Respond, Check::Ok { ok: *ok }),
-                PropertyKind::Observer { ok, .. } => (PropKind::Observer, Check::Ok { ok: *ok }),
+                PropertyKind::Respond { ok, .. } => (PropKind::Respond, Check::Ok { ok: e(ok) }),
+                PropertyKind::Observer { ok, .. } => (PropKind::Observer, Check::Ok { ok: e(ok) }),
             };
             Spec {
                 name: p.name.clone(),

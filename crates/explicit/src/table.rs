@@ -38,28 +38,32 @@ impl<K: Key> Default for Shard<K> {
 impl<K: Key> Shard<K> {
     /// Insert a key with its hash; true when it was not there before (the key is cloned
     /// only then).
+    #[inline]
     pub fn insert(&mut self, key: &K, hash: u64) -> bool {
         if (self.len + 1) * 5 > self.slots.len() * 4 {
             self.grow();
         }
-        let cap = self.slots.len();
-        let mut i = index(hash, cap);
-        loop {
-            let s = &self.slots[i];
-            if s.is_empty() {
-                self.heap += key.heap_bytes();
-                self.slots[i] = key.clone();
-                self.len += 1;
-                return true;
-            }
-            if s == key {
-                return false;
-            }
-            i += 1;
-            if i == cap {
-                i = 0;
-            }
+        let start = index(hash, self.slots.len());
+        // Linear probing: from the hash's slot to the end, then from the start (the table is
+        // never full, so one of the two finds the key or a free slot).
+        let hit = |s: &K| s.is_empty() || s == key;
+        let (head, tail) = self.slots.split_at_mut(start);
+        let Some(slot) = tail
+            .iter_mut()
+            .find(|s| hit(s))
+            .or_else(|| head.iter_mut().find(|s| hit(s)))
+        else {
+            // Not reached: the load factor keeps free slots. Growing makes room anyway.
+            self.grow();
+            return self.insert(key, hash);
+        };
+        if !slot.is_empty() {
+            return false;
         }
+        *slot = key.clone();
+        self.heap += key.heap_bytes();
+        self.len += 1;
+        true
     }
 
     fn grow(&mut self) {

@@ -61,6 +61,16 @@ impl RuntimeErrorKind {
 }
 
 impl Program {
+    /// Expression `e` ready for [`Machine::holds`]: its compiled code when it has some (the
+    /// program's assumptions, their `&&` conjuncts, properties and active-state expressions),
+    /// so that evaluating it repeatedly costs no look-up.
+    pub fn prepare(&self, e: ExprId) -> Prepared {
+        match self.code().exprs.get(&e) {
+            Some(seg) if self.code().runnable => Prepared(PreparedKind::Code(*seg)),
+            _ => Prepared(PreparedKind::Tree(e)),
+        }
+    }
+
     /// Render a run-time error with its site: what, where in the model, which instance/state.
     pub fn describe_error(&self, e: &RuntimeError) -> String {
         match self.sites.get(e.site as usize) {
@@ -109,6 +119,8 @@ pub struct Machine<'p> {
     n_slots: usize,
     /// Coverage counters, if enabled.
     coverage: Option<Vec<u64>>,
+    /// True when input `i` is slot `n_state + i` (see [`Machine::load`]).
+    inputs_follow_state: bool,
 }
 
 impl<'p> Machine<'p> {
@@ -122,6 +134,11 @@ impl<'p> Machine<'p> {
             stack: vec![0; code.max_depth],
             n_slots: program.slots.len(),
             coverage: None,
+            inputs_follow_state: program
+                .inputs
+                .iter()
+                .enumerate()
+                .all(|(i, inp)| inp.slot as usize == program.n_state + i),
         }
     }
 
@@ -155,6 +172,23 @@ impl<'p> Machine<'p> {
         self.regs[..self.program.n_state].copy_from_slice(state);
     }
 
+    /// Overwrite the persistent state and the tick's inputs (`inputs` holds one value per
+    /// input, in [`Program::inputs`] order): one copy when the input slots follow the state,
+    /// as the layout places them.
+    #[inline]
+    pub fn load(&mut self, state: &[i64], inputs: &[i64]) {
+        let ns = self.program.n_state;
+        self.regs[..ns].copy_from_slice(state);
+        if self.inputs_follow_state {
+            let k = self.program.inputs.len();
+            self.regs[ns..ns + k].copy_from_slice(&inputs[..k]);
+        } else {
+            for (inp, &x) in self.program.inputs.iter().zip(inputs) {
+                self.regs[inp.slot as usize] = x;
+            }
+        }
+    }
+
     /// Set a slot (normally an input slot) to a value.
     #[inline]
     pub fn set(&mut self, slot: SlotId, value: i64) {
@@ -176,6 +210,21 @@ impl<'p> Machine<'p> {
             return Ok(self.regs[seg.reg as usize]);
         }
         eval(&self.program.nodes, &self.regs[..self.n_slots], e)
+    }
+
+    /// True when the prepared expression evaluates to non-zero on the current slots; false
+    /// when it is zero or its evaluation fails (the reading of properties and assumptions).
+    #[inline]
+    pub fn holds(&mut self, e: Prepared) -> bool {
+        match e.0 {
+            PreparedKind::Code(seg) => {
+                crate::vm::run(self.code, &mut self.regs, &mut self.stack, None, seg.start).is_ok()
+                    && self.regs[seg.reg as usize] != 0
+            }
+            PreparedKind::Tree(e) => {
+                matches!(eval(&self.program.nodes, &self.regs[..self.n_slots], e), Ok(v) if v != 0)
+            }
+        }
     }
 
     /// Run one tick with the inputs currently in the input slots.
@@ -209,6 +258,18 @@ impl<'p> Machine<'p> {
         self.regs[..self.n_slots].copy_from_slice(&slots);
         r
     }
+}
+
+/// An expression prepared by [`Machine::prepare`] for the machines of one program.
+#[derive(Clone, Copy, Debug)]
+pub struct Prepared(PreparedKind);
+
+#[derive(Clone, Copy, Debug)]
+enum PreparedKind {
+    /// Compiled: run this segment of the register code.
+    Code(crate::vm::Segment),
+    /// Not compiled: walk the expression tree.
+    Tree(ExprId),
 }
 
 /// Evaluate expression `e` over `slots` (for read-only views such as trace rendering).

@@ -14,6 +14,6 @@ pub mod lower;
 mod program;
 mod vm;
 
-pub use interp::{eval, Machine, RuntimeError, RuntimeErrorKind};
+pub use interp::{eval, Machine, Prepared, RuntimeError, RuntimeErrorKind};
 pub use lower::lower;
 pub use program::*;

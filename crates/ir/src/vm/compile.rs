@@ -197,9 +197,19 @@ pub(super) fn compile(p: &Program) -> Option<Compiled> {
 }
 
 /// Every expression a consumer evaluates outside the step: assumptions, properties and the
-/// instances' active-state expressions.
+/// instances' active-state expressions. The `&&` conjuncts of an assumption too: the explicit
+/// checker evaluates them one by one.
 fn roots(p: &Program) -> Vec<ExprId> {
     let mut roots: Vec<ExprId> = p.assumes.clone();
+    let mut stack = p.assumes.clone();
+    while let Some(e) = stack.pop() {
+        if let Some(Node::Binary(statecheck_syntax::ast::BinOp::And, a, b, _)) =
+            p.nodes.get(e as usize)
+        {
+            roots.extend([*a, *b]);
+            stack.extend([*a, *b]);
+        }
+    }
     for prop in &p.properties {
         match &prop.kind {
             PropertyKind::Invariant { expr, assuming } => {

@@ -39,7 +39,7 @@ fn set(facts: &mut Facts, r: Reg, v: Option<i64>) {
 }
 
 /// The outcome of a conditional jump when its operands are known: `Some(taken)`.
-fn decide(op: &Op, known: impl Fn(Reg) -> Option<i64>) -> Option<bool> {
+pub(super) fn decide(op: &Op, known: impl Fn(Reg) -> Option<i64>) -> Option<bool> {
     let imm = |a: Reg, k: i32, f: fn(i64, i64) -> bool| known(a).map(|x| f(x, k as i64));
     let two = |a: Reg, b: Reg, f: fn(i64, i64) -> bool| Some(f(known(a)?, known(b)?));
     match *op {

@@ -87,7 +87,28 @@ fn exec(
     assert!(regs.len() == code.init_regs.len() && (start as usize) < ops.len());
     let tables = &code.tables[..];
     let mut sp = 0usize;
-    let mut pc = start as usize;
+    // The instruction pointer is a pointer rather than an index: fetching through it saves
+    // the index arithmetic of every dispatch. It always points into `ops`.
+    let base = ops.as_ptr();
+    // SAFETY: `start < ops.len()` (asserted above).
+    let mut pc: *const Op = unsafe { base.add(start as usize) };
+    // The index of the instruction `pc` points to.
+    macro_rules! index {
+        () => {
+            // SAFETY: `pc` and `base` point into the same slice, `pc` at or after `base`.
+            unsafe { pc.offset_from(base) as usize }
+        };
+    }
+    // Continue at instruction `t`.
+    macro_rules! goto {
+        ($t:expr) => {{
+            let t = $t as usize;
+            debug_assert!(t < ops.len());
+            // SAFETY: `t < ops.len()`: a validated jump target, switch table entry or return
+            // address (the index after a `Call`, which is never last).
+            pc = unsafe { base.add(t) };
+        }};
+    }
     macro_rules! r {
         ($x:expr) => {
             *{
@@ -103,34 +124,36 @@ fn exec(
         ($v:expr) => {
             match $v {
                 Some(v) => v,
-                None => return Err(fail(code, pc, K::Overflow)),
+                None => return Err(fail(code, index!(), K::Overflow)),
             }
         };
     }
     macro_rules! jump_if {
         ($cond:expr, $t:expr) => {
             if $cond {
-                pc = $t as usize;
+                goto!($t);
             }
         };
     }
     loop {
-        trace(pc);
-        debug_assert!(pc < ops.len());
-        // SAFETY: `pc < ops.len()`: it is `start` (checked above), a validated jump target or
-        // return address (the index after a `Call`, which is never last), or the index after
-        // an instruction that is not last (the last one, `End` or `Ret`, does not fall
-        // through).
-        let op = *unsafe { ops.get_unchecked(pc) };
-        pc += 1;
-        match op {
+        trace(index!());
+        debug_assert!(index!() < ops.len());
+        // SAFETY: `pc` points into `ops`: at `start` (checked above), a validated jump target
+        // or return address (the index after a `Call`, which is never last), or after an
+        // instruction that is not last (the last one, `End` or `Ret`, does not fall through).
+        // Matched through the reference, so that each arm loads only its own operands (a copy
+        // made the dispatch decode every field of every instruction).
+        let op = unsafe { &*pc };
+        // SAFETY: at most one past the end of `ops` (and then never dereferenced: see above).
+        pc = unsafe { pc.add(1) };
+        match *op {
             Op::Add { d, a, b } => r!(d) = checked!(r!(a).checked_add(r!(b))),
             Op::Sub { d, a, b } => r!(d) = checked!(r!(a).checked_sub(r!(b))),
             Op::Mul { d, a, b } => r!(d) = checked!(r!(a).checked_mul(r!(b))),
-            Op::Div { d, a, b } => r!(d) = slow_binary(code, pc, BinOp::Div, r!(a), r!(b))?,
-            Op::Rem { d, a, b } => r!(d) = slow_binary(code, pc, BinOp::Rem, r!(a), r!(b))?,
-            Op::Shl { d, a, b } => r!(d) = slow_binary(code, pc, BinOp::Shl, r!(a), r!(b))?,
-            Op::Shr { d, a, b } => r!(d) = slow_binary(code, pc, BinOp::Shr, r!(a), r!(b))?,
+            Op::Div { d, a, b } => r!(d) = slow_binary(code, index!(), BinOp::Div, r!(a), r!(b))?,
+            Op::Rem { d, a, b } => r!(d) = slow_binary(code, index!(), BinOp::Rem, r!(a), r!(b))?,
+            Op::Shl { d, a, b } => r!(d) = slow_binary(code, index!(), BinOp::Shl, r!(a), r!(b))?,
+            Op::Shr { d, a, b } => r!(d) = slow_binary(code, index!(), BinOp::Shr, r!(a), r!(b))?,
             Op::And { d, a, b } => r!(d) = r!(a) & r!(b),
             Op::Or { d, a, b } => r!(d) = r!(a) | r!(b),
             Op::Xor { d, a, b } => r!(d) = r!(a) ^ r!(b),
@@ -171,16 +194,18 @@ fn exec(
             }
             Op::Check { a, bounds } => {
                 let v = r!(a);
-                let (lo, hi) = code.bounds[bounds as usize];
+                // SAFETY: `Code::validate` asserted `bounds < code.bounds.len()`.
+                let (lo, hi) = *unsafe { code.bounds.get_unchecked(bounds as usize) };
                 if v < lo || v > hi {
-                    return Err(fail(code, pc, K::Range { value: v, lo, hi }));
+                    return Err(fail(code, index!(), K::Range { value: v, lo, hi }));
                 }
             }
             Op::CheckMov { d, a, bounds } => {
                 let v = r!(a);
-                let (lo, hi) = code.bounds[bounds as usize];
+                // SAFETY: `Code::validate` asserted `bounds < code.bounds.len()`.
+                let (lo, hi) = *unsafe { code.bounds.get_unchecked(bounds as usize) };
                 if v < lo || v > hi {
-                    return Err(fail(code, pc, K::Range { value: v, lo, hi }));
+                    return Err(fail(code, index!(), K::Range { value: v, lo, hi }));
                 }
                 r!(d) = v;
             }
@@ -200,20 +225,23 @@ fn exec(
             Op::JNotIn { a, set, t } => jump_if!(!in_set(r!(a), set), t),
             Op::JAnyI { a, imm, t } => jump_if!(r!(a) & imm as i64 != 0, t),
             Op::JNoneI { a, imm, t } => jump_if!(r!(a) & imm as i64 == 0, t),
-            Op::Jmp { t } => pc = t as usize,
+            Op::Jmp { t } => goto!(t),
             Op::Switch { a, len, table } => {
                 let v = r!(a) as u64;
                 let k = if v < len as u64 { 1 + v as usize } else { 0 };
-                pc = tables[table as usize + k] as usize;
+                debug_assert!(table as usize + k < tables.len());
+                // SAFETY: `k <= len`, and `Code::validate` asserted that the switch's entries
+                // `table..=table + len` are in `code.tables`.
+                goto!(*unsafe { tables.get_unchecked(table as usize + k) });
             }
             Op::Call { t } => {
-                stack[sp] = pc as u32;
+                stack[sp] = index!() as u32;
                 sp += 1;
-                pc = t as usize;
+                goto!(t);
             }
             Op::Ret => {
                 sp -= 1;
-                pc = stack[sp] as usize;
+                goto!(stack[sp]);
             }
             Op::Cover { id } => {
                 if let Some(c) = cov.as_deref_mut() {

@@ -163,3 +163,108 @@ fn range_checks_are_dropped_only_when_they_cannot_fail() {
         }
     }
 }
+
+/// A chart whose two transitions are triggered by the same event tests the event once when it
+/// is absent: the first test's jump is threaded past the second (which it decides), and a tick
+/// without the event runs the started test, the switch, one event test and `End`.
+#[test]
+fn an_absent_event_is_tested_once() {
+    let p = program(
+        "chart Counter {
+  input event inc;
+  output c: int[0..7] = 0;
+  initial Run;
+  state Run {
+    on inc [c < 7] / { c += 1; };
+    on inc / { c = 0; };
+  }
+}
+system S { instance k: Counter; }",
+    );
+    let code = p.code();
+    let inc = p.inputs[0].slot as u16;
+    for op in &code.ops {
+        if let Op::Jz { a, t } = *op {
+            if a == inc {
+                let target = code.ops[t as usize];
+                assert!(
+                    !matches!(target, Op::Jz { a, .. } if a == inc),
+                    "{op:?} jumps to {target:?}"
+                );
+            }
+        }
+    }
+    let mut regs = code.init_regs.clone();
+    let mut counts = vec![0u64; code.ops.len()];
+    // The initialisation tick, then one without the event.
+    for _ in 0..2 {
+        run_counting(code, &mut regs, code.step, &mut counts).expect("no run-time error");
+    }
+    counts.iter_mut().for_each(|c| *c = 0);
+    run_counting(code, &mut regs, code.step, &mut counts).expect("no run-time error");
+    assert_eq!(counts.iter().sum::<u64>(), 4, "{:?}", code.ops);
+}
+
+/// `Machine::load` sets what `load_state` and `set` set, and a prepared expression holds
+/// exactly when evaluating it gives non-zero (an error counts as false): on the FAM plant,
+/// over random states reached by random ticks, for every property, assumption and `&&`
+/// conjunct of an assumption.
+#[test]
+fn load_and_prepared_expressions_agree_with_the_plain_calls() {
+    let p = fam();
+    let mut exprs: Vec<crate::ExprId> = p.assumes.clone();
+    let mut stack = p.assumes.clone();
+    while let Some(e) = stack.pop() {
+        if let crate::Node::Binary(statecheck_syntax::ast::BinOp::And, a, b, _) =
+            p.nodes[e as usize]
+        {
+            exprs.extend([a, b]);
+            stack.extend([a, b]);
+        }
+    }
+    for prop in &p.properties {
+        match &prop.kind {
+            crate::PropertyKind::Invariant { expr, assuming } => {
+                exprs.push(*expr);
+                exprs.extend(assuming);
+            }
+            crate::PropertyKind::Reachable { expr } => exprs.push(*expr),
+            crate::PropertyKind::Respond { ok, .. } | crate::PropertyKind::Observer { ok, .. } => {
+                exprs.push(*ok)
+            }
+        }
+    }
+    let prepared: Vec<_> = exprs.iter().map(|&e| p.prepare(e)).collect();
+    let mut walk = crate::Machine::new(&p);
+    let mut rng = 7u64;
+    let mut next = |lo: i64, hi: i64| {
+        rng ^= rng << 13;
+        rng ^= rng >> 7;
+        rng ^= rng << 17;
+        lo + (rng % ((hi - lo + 1) as u64)) as i64
+    };
+    for _ in 0..2000 {
+        let inputs: Vec<i64> = p
+            .inputs
+            .iter()
+            .map(|i| next(p.slots[i.slot as usize].lo, p.slots[i.slot as usize].hi))
+            .collect();
+        let state = walk.state().to_vec();
+        let mut loaded = crate::Machine::new(&p);
+        loaded.load(&state, &inputs);
+        let mut set = crate::Machine::new(&p);
+        set.load_state(&state);
+        for (i, &x) in p.inputs.iter().zip(&inputs) {
+            set.set(i.slot, x);
+        }
+        assert_eq!(loaded.slots(), set.slots());
+        for (&e, &q) in exprs.iter().zip(&prepared) {
+            let want = matches!(set.eval(e), Ok(v) if v != 0);
+            assert_eq!(loaded.holds(q), want, "expression {e}");
+        }
+        walk.load(&state, &inputs);
+        if walk.step().is_err() {
+            walk = crate::Machine::new(&p);
+        }
+    }
+}
