@@ -146,6 +146,9 @@ pub fn run_auto(p: &Program, opts: &Options) -> Result<Run> {
         }
         // Detached: the explicit engine has no stop flag; the process exits without waiting.
         std::thread::spawn(move || {
+            // A model small enough for the explicit engine is done in moments; on a large one
+            // it would take the cores from the SAT engines until the deadline.
+            lower_priority();
             let t = Instant::now();
             let r = statecheck_explicit::verify(&p, &o, None);
             let _ = tx.send(Msg::Explicit(Box::new(r), t.elapsed()));
@@ -320,6 +323,25 @@ pub fn run_auto(p: &Program, opts: &Options) -> Result<Run> {
         invariants,
     })
 }
+
+/// Lower the calling thread's scheduling priority (nice 10; on Linux the nice value is per
+/// thread and inherited by the threads it starts). Failure leaves the priority as it was.
+#[cfg(target_os = "linux")]
+#[allow(unsafe_code)] // reason: two FFI calls with integer arguments only (gettid, setpriority)
+fn lower_priority() {
+    // SAFETY: `gettid` has no preconditions and `setpriority` reads only its integer
+    // arguments; neither touches memory of ours. An error (-1) is ignored on purpose.
+    unsafe {
+        let tid = libc::syscall(libc::SYS_gettid);
+        if let Ok(tid) = libc::id_t::try_from(tid) {
+            libc::setpriority(libc::PRIO_PROCESS, tid, 10);
+        }
+    }
+}
+
+/// Elsewhere the explicit engine keeps the default priority.
+#[cfg(not(target_os = "linux"))]
+fn lower_priority() {}
 
 /// Choose the engine of a `.sc` run; `None` means the explicit engine alone.
 pub fn run_model(p: &Program, opts: &Options, engine: EngineArg) -> Result<Option<Run>> {
