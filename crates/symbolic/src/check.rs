@@ -161,9 +161,8 @@ fn run_property(
         Outcome::Proved(Some(inv)) => {
             let (own, kept) = bl.problem_with_latches(prop);
 
-            let cert = renumber(&inv, &shared.latch_origin, &kept)
-                .filter(|inv| crate::cert::check(&own, inv).is_ok())
-                .map(|inv| (own, inv));
+            let inv = renumber(&inv, &shared.latch_origin, &kept);
+            let cert = crate::cert::check(&own, &inv).is_ok().then_some((own, inv));
             (Outcome::Proved(None), cert)
         }
         out => (out, None),
@@ -173,20 +172,18 @@ fn run_property(
 /// An invariant over latches numbered by `from` (index in a base circuit of each latch) over
 /// latches numbered by `to`, without the clauses that mention a latch `to` lacks (facts about
 /// other properties' latches; the caller checks that the rest is still an invariant).
-fn renumber(inv: &Invariant, from: &[usize], to: &[usize]) -> Option<Invariant> {
+fn renumber(inv: &Invariant, from: &[usize], to: &[usize]) -> Invariant {
     let mut base_to = std::collections::HashMap::with_capacity(to.len());
     for (j, &b) in to.iter().enumerate() {
         base_to.insert(b, j);
     }
-    let kept: Invariant = inv
-        .iter()
+    inv.iter()
         .filter_map(|c| {
             c.iter()
                 .map(|&(j, v)| Some((*base_to.get(from.get(j)?)?, v)))
                 .collect()
         })
-        .collect();
-    Some(kept)
+        .collect()
 }
 
 /// The answer for one property.

@@ -132,8 +132,8 @@ impl<'a> Ternary<'a> {
                 }
             }
             self.simulate_cone();
-            let all_x = required.iter().all(|&l| lit_val(&self.val, l) == ONE);
-            if !all_x {
+            let justified = required.iter().all(|&l| lit_val(&self.val, l) == ONE);
+            if !justified {
                 // Cannot happen for a correct justification; start from the full state again.
                 for &(j, b) in state {
                     self.val[aig.latches[j].var as usize] = u8::from(b);
@@ -143,7 +143,7 @@ impl<'a> Ternary<'a> {
             let mut kept = Vec::with_capacity(state.len());
             for &(j, b) in state {
                 let var = aig.latches[j].var;
-                let tried = self.in_cone[var as usize] && (self.needed[var as usize] || !all_x);
+                let tried = self.in_cone[var as usize] && (self.needed[var as usize] || !justified);
                 if tried && !self.try_x(var) {
                     kept.push((j, b));
                 }
