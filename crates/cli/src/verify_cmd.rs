@@ -12,7 +12,7 @@ mod symbolic;
 use crate::load;
 use anyhow::{bail, Result};
 use clap::Args;
-use statecheck_explicit::{human_bytes, verify, Options, Verdict};
+use statecheck_explicit::{human_bytes, verify, Backend, Options, Verdict};
 use std::io::IsTerminal;
 use std::time::Duration;
 
@@ -57,6 +57,11 @@ pub struct VerifyArgs {
     /// Explore even when there are more than a million input vectors per tick.
     #[arg(long)]
     force: bool,
+    /// How the explicit engine computes successors: `interpreter` (the IR's register code),
+    /// `native` (the C step function compiled by the system's C compiler, cross-checked
+    /// against the interpreter), or `auto` (native once a search runs longer than 0.3 s).
+    #[arg(long, value_enum, default_value = "auto")]
+    backend: BackendArg,
     /// Print one JSON object.
     #[arg(long)]
     json: bool,
@@ -77,6 +82,24 @@ pub struct VerifyArgs {
     /// The plant file's system of plants and requirements (with --plant).
     #[arg(long, value_name = "NAME", requires = "plant")]
     plant_system: Option<String>,
+}
+
+/// `--backend`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+enum BackendArg {
+    Auto,
+    Interpreter,
+    Native,
+}
+
+impl From<BackendArg> for Backend {
+    fn from(b: BackendArg) -> Backend {
+        match b {
+            BackendArg::Auto => Backend::Auto,
+            BackendArg::Interpreter => Backend::Interpreter,
+            BackendArg::Native => Backend::Native,
+        }
+    }
 }
 
 /// Run the command; returns the exit code.
@@ -130,6 +153,7 @@ pub fn run(a: VerifyArgs) -> Result<u8> {
         timeout,
         threads: a.threads.unwrap_or(0),
         force: a.force,
+        backend: a.backend.into(),
         ..Options::default()
     };
     if let Some(run) = symbolic::run_model(&program, &opts, a.engine)? {

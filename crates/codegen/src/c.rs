@@ -109,6 +109,8 @@ pub(crate) struct Names {
     pub procs: Vec<String>,
     /// Value names of each slot, where known.
     pub values: Vec<Option<Vec<String>>>,
+    /// Record coverage hits through `o->cover_hits_` (see [`generate_counting_covers`]).
+    pub count_covers: bool,
 }
 
 impl Names {
@@ -138,6 +140,7 @@ impl Names {
                     _ => None,
                 })
                 .collect(),
+            count_covers: false,
         }
     }
 
@@ -150,6 +153,21 @@ impl Names {
             ident(name)
         )
         .to_uppercase()
+    }
+}
+
+/// [`generate`], for a model checker that runs the step function itself: the outputs struct
+/// gains `uint8_t *cover_hits_`, and every coverage item of the program sets
+/// `o->cover_hits_[id] = 1` when it is hit (the caller points it at one byte per item of
+/// [`Program::covers`]). Everything else is exactly the code of [`generate`].
+pub fn generate_counting_covers(p: &Program, src: &Source, prefix: &str) -> CFiles {
+    let prefix = ident(prefix).to_lowercase();
+    let mut n = Names::new(p, &prefix);
+    n.count_covers = true;
+    CFiles {
+        header: header(p, src, &n),
+        source: source(p, src, &n),
+        prefix,
     }
 }
 
@@ -236,6 +254,9 @@ fn header(p: &Program, src: &Source, n: &Names) -> String {
         if ar == Area::Temp {
             h.push_str("    uint32_t error_site; /* site of the run-time error */\n");
             h.push_str("    int64_t error_value, error_lo, error_hi; /* range errors */\n");
+            if n.count_covers {
+                h.push_str("    uint8_t *cover_hits_; /* one byte per coverage item */\n");
+            }
         } else if !any {
             h.push_str("    uint8_t unused_;\n");
         }
@@ -369,12 +390,14 @@ fn body(p: &Program, src: &Source, n: &Names, stmts: &[statecheck_ir::Stmt]) -> 
         )
     };
     let case = |s: SlotId, k: usize| case_label(n, s, k);
+    let hit = |c: u32| format!("o->cover_hits_[{c}] = 1;");
     let mut em = CEmit {
         p,
         slot: &slot,
         fail: &fail,
         fail_range: &fail_range,
         cover_comment: &cover_comment,
+        cover_hit: n.count_covers.then_some(&hit as &dyn Fn(u32) -> String),
         site_comment: &site_comment,
         call: &call,
         case_label: &case,

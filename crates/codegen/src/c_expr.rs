@@ -21,6 +21,8 @@ pub(crate) struct CEmit<'a> {
     pub fail_range: &'a dyn Fn(u32, &str, i64, i64) -> String,
     /// Comment for a statement-level item (coverage labels), by cover id.
     pub cover_comment: &'a dyn Fn(u32) -> String,
+    /// Statement recording that a coverage item was hit, when the code counts coverage.
+    pub cover_hit: Option<&'a dyn Fn(u32) -> String>,
     /// Comment for a site.
     pub site_comment: &'a dyn Fn(u32) -> String,
     /// Procedure call statement (returns on error).
@@ -409,6 +411,10 @@ impl CEmit<'_> {
                 let mut s = String::new();
                 let _ = write!(s, "/* {text} */");
                 self.line(&s);
+                if let Some(hit) = self.cover_hit {
+                    let h = hit(*c);
+                    self.line(&h);
+                }
             }
         }
     }

@@ -214,6 +214,7 @@ fn expr_fn(p: &Program, k: usize, e: ExprId) -> String {
         fail: &fail,
         fail_range: &fail_range,
         cover_comment: &none,
+        cover_hit: None,
         site_comment: &none,
         call: &none,
         case_label: &case,

@@ -2,12 +2,13 @@
 //! counters `int[0..M]`, each incremented by its own input event, with an `assume` that at most
 //! one event is present per tick (so N + 1 transitions per state, (M+1)^N states).
 //!
-//! `cargo bench -p statecheck-explicit --bench explore -- [N] [M] [THREADS]`
-//! (defaults 4 63 0 = all cores). Prints states/s and bytes stored per state.
+//! `cargo bench -p statecheck-explicit --bench explore -- [N] [M] [THREADS] [BACKEND]`
+//! (defaults 4 63 0 native; 0 threads = all cores; BACKEND `native`, `interpreter` or
+//! `auto`). Prints states/s and bytes stored per state.
 
 mod common;
 
-use statecheck_explicit::{verify, Options};
+use statecheck_explicit::{verify, Backend, Options};
 
 fn model(n: usize, m: usize) -> String {
     let mut pairs = Vec::new();
@@ -33,10 +34,20 @@ fn main() {
         .collect();
     let arg = |i: usize, d: usize| args.get(i).and_then(|s| s.parse().ok()).unwrap_or(d);
     let (n, m, threads) = (arg(0, 4), arg(1, 63), arg(2, 0));
+    let backend = match args.get(3).map(String::as_str) {
+        None | Some("native") => Backend::Native,
+        Some("interpreter") => Backend::Interpreter,
+        Some("auto") => Backend::Auto,
+        Some(other) => {
+            eprintln!("unknown backend {other}: native, interpreter or auto");
+            std::process::exit(2);
+        }
+    };
     let text = model(n, m);
     let program = common::bench_program(&text);
     let opts = Options {
         threads,
+        backend,
         ..Options::default()
     };
     let report = match verify(&program, &opts, None) {
@@ -60,6 +71,18 @@ fn main() {
         "threads: {}, time: {:.3} s",
         s.threads,
         s.time.as_secs_f64()
+    );
+    println!(
+        "backend: {} (asked {}){}{}",
+        s.backend,
+        backend.as_str(),
+        s.native_build_time
+            .map(|t| format!(", native code built in {:.3} s", t.as_secs_f64()))
+            .unwrap_or_default(),
+        s.native_note
+            .as_ref()
+            .map(|n| format!(", note: {n}"))
+            .unwrap_or_default()
     );
     println!("states/s: {:.0}", s.states_per_s());
     println!(

@@ -4,10 +4,11 @@
 //! once per new state ([`StateCheck`]).
 
 use crate::inputs::InputSpace;
+use crate::native::NativeRun;
 use crate::pack::{Key, Packer};
 use crate::props::{Check, Spec};
 use crate::table::{shard_of, SHARDS};
-use statecheck_ir::{Machine, Prepared, Program, RuntimeError};
+use statecheck_ir::{ExprId, Machine, Prepared, Program, RuntimeError};
 
 /// A successor found while expanding: its key and how it was reached.
 pub(crate) struct Cand<K> {
@@ -49,6 +50,8 @@ pub(crate) struct Expander<'a> {
     pub space: &'a InputSpace,
     pub specs: &'a [Spec],
     pub coverage: bool,
+    /// The native successor generator, used once it is ready (see [`crate::native`]).
+    pub native: Option<&'a NativeRun>,
 }
 
 impl Expander<'_> {
@@ -65,33 +68,25 @@ impl Expander<'_> {
     pub fn chunk<K: Key>(&self, states: &[K], first_pos: usize, pending: &[bool]) -> ChunkOut<K> {
         let p = self.program;
         let sp = self.space;
-        let mut m = Machine::new(p);
-        if self.coverage {
-            m.enable_coverage();
+        // Only the per-transition properties; the others are checked per new state.
+        let mut open = Open::new(self.specs, pending);
+        if open.watch.is_empty() {
+            if let Some((native, run)) = self.native.and_then(|r| r.ready().map(|n| (n, r))) {
+                return self.chunk_native(native, run, states, first_pos, open);
+            }
         }
+        let mut m = self.machine();
         let mut state = vec![0i64; p.n_state];
         let mut words = vec![0u64; self.packer.words];
         let mut inp = vec![0i64; sp.slots.len()];
-        // Only the per-transition properties; the others are checked per new state.
-        let mut open = Open::new(self.specs, pending);
-        // Room for every successor, spread evenly over the shards, plus some slack.
-        let per_shard =
-            (states.len() as u128 * sp.per_tick() / SHARDS as u128 * 5 / 4).min(1 << 16) as usize;
-        let mut out = ChunkOut {
-            buckets: (0..SHARDS)
-                .map(|_| Vec::with_capacity(per_shard + 4))
-                .collect(),
-            found: Vec::new(),
-            transitions: 0,
-            coverage: None,
-        };
+        let mut out = ChunkOut::with_room(states.len(), sp.per_tick());
         let n = sp.slots.len();
         // Assumes evaluated on every transition: all of them when the vectors are not listed.
-        let mut per_tick: Vec<Prepared> = sp.mixed_assumes.iter().map(|&a| p.prepare(a)).collect();
+        let mut per_tick = self.prepared(&sp.mixed_assumes);
         if sp.listed().is_none() {
-            per_tick.extend(sp.input_assumes.iter().map(|&a| p.prepare(a)));
+            per_tick.extend(self.prepared(&sp.input_assumes));
         }
-        let state_assumes: Vec<Prepared> = sp.state_assumes.iter().map(|&a| p.prepare(a)).collect();
+        let state_assumes = self.prepared(&sp.state_assumes);
         for (j, key) in states.iter().enumerate() {
             let pos = (first_pos + j) as u32;
             self.packer.unpack(key, &mut words, &mut state);
@@ -136,6 +131,20 @@ impl Expander<'_> {
         out
     }
 
+    /// A machine for this expander (counting coverage when asked).
+    pub(crate) fn machine(&self) -> Machine<'_> {
+        let mut m = Machine::new(self.program);
+        if self.coverage {
+            m.enable_coverage();
+        }
+        m
+    }
+
+    /// Compiled forms of `assumes`.
+    pub(crate) fn prepared(&self, assumes: &[ExprId]) -> Vec<Prepared> {
+        assumes.iter().map(|&a| self.program.prepare(a)).collect()
+    }
+
     /// One tick from the loaded state with the inputs set: record what it decides and the
     /// successor.
     #[inline(always)]
@@ -149,22 +158,7 @@ impl Expander<'_> {
     ) {
         out.transitions += 1;
         match m.step() {
-            Err(e) => {
-                let name = e.kind.builtin_property();
-                let hit = self
-                    .specs
-                    .iter()
-                    .position(|s| matches!(s.check, Check::Builtin(b) if b == name));
-                if let Some(i) = hit.filter(|i| open.builtin[*i]) {
-                    open.builtin[i] = false;
-                    out.found.push(Found {
-                        prop: i,
-                        parent: t.key.clone(),
-                        input: t.input,
-                        error: Some(e),
-                    });
-                }
-            }
+            Err(e) => self.record_error(e, &t, open, out),
             Ok(()) => {
                 if !open.watch.is_empty() {
                     let specs = self.specs;
@@ -182,22 +176,68 @@ impl Expander<'_> {
                     });
                 }
                 let succ: K = self.packer.pack(m.state(), words);
-                // A self-loop leads to a state already visited (the source): nothing to insert.
-                if succ == *t.key {
-                    return;
-                }
-                out.buckets[shard_of(succ.hash64())].push(Cand {
-                    key: succ,
-                    parent: t.pos,
-                    input: t.input,
-                });
+                push_successor(succ, &t, out);
             }
+        }
+    }
+
+    /// A tick stopped by a run-time error: it decides its built-in property if still pending.
+    pub(crate) fn record_error<K: Key>(
+        &self,
+        e: RuntimeError,
+        t: &Tick<'_, K>,
+        open: &mut Open,
+        out: &mut ChunkOut<K>,
+    ) {
+        let name = e.kind.builtin_property();
+        let hit = self
+            .specs
+            .iter()
+            .position(|s| matches!(s.check, Check::Builtin(b) if b == name));
+        if let Some(i) = hit.filter(|i| open.builtin[*i]) {
+            open.builtin[i] = false;
+            out.found.push(Found {
+                prop: i,
+                parent: t.key.clone(),
+                input: t.input,
+                error: Some(e),
+            });
+        }
+    }
+}
+
+/// Record the successor `succ` of a tick.
+#[inline(always)]
+pub(crate) fn push_successor<K: Key>(succ: K, t: &Tick<'_, K>, out: &mut ChunkOut<K>) {
+    // A self-loop leads to a state already visited (the source): nothing to insert.
+    if succ == *t.key {
+        return;
+    }
+    out.buckets[shard_of(succ.hash64())].push(Cand {
+        key: succ,
+        parent: t.pos,
+        input: t.input,
+    });
+}
+
+impl<K> ChunkOut<K> {
+    /// An empty output with room for the successors of `states` states of `per_tick`
+    /// transitions each, spread evenly over the shards, plus some slack.
+    pub(crate) fn with_room(states: usize, per_tick: u128) -> ChunkOut<K> {
+        let per_shard = (states as u128 * per_tick / SHARDS as u128 * 5 / 4).min(1 << 16) as usize;
+        ChunkOut {
+            buckets: (0..SHARDS)
+                .map(|_| Vec::with_capacity(per_shard + 4))
+                .collect(),
+            found: Vec::new(),
+            transitions: 0,
+            coverage: None,
         }
     }
 }
 
 /// The properties a chunk still checks on every transition.
-struct Open {
+pub(crate) struct Open {
     /// Per property: a still-pending built-in (decided by a run-time error of the tick).
     builtin: Vec<bool>,
     /// Still-pending properties evaluated after every tick, in declaration order.
@@ -225,10 +265,10 @@ impl Open {
 }
 
 /// The transition being taken: the source state, its position, the input position.
-struct Tick<'k, K> {
-    key: &'k K,
-    pos: u32,
-    input: u32,
+pub(crate) struct Tick<'k, K> {
+    pub key: &'k K,
+    pub pos: u32,
+    pub input: u32,
 }
 
 /// A new state deciding a per-state property: the property, the parent's position in its

@@ -12,6 +12,10 @@
 //! inserted), the others on every transition; `assume` conjuncts are solved up front (inputs
 //! only), per state (state only) or per transition ([`InputSpace`]).
 //!
+//! Successors come from the IR's register code, or from the same program compiled to machine
+//! code by the C code generator and the system's C compiler ([`Backend`], `native`): the
+//! interpreter stays the reference that the native code is compared against during the run.
+//!
 //! To keep the visited set small (no parent pointers), a counterexample is rebuilt after the
 //! exploration by a second search, with parent links, up to the depth of the deepest violation,
 //! within what is left of the time budget.
@@ -20,6 +24,7 @@ mod enumerate;
 mod expand;
 mod inputs;
 mod interval;
+mod native;
 pub mod pack;
 pub mod props;
 mod reads;
@@ -58,7 +63,38 @@ pub struct Options {
     pub force: bool,
     /// The branching factor above which the run is refused without `force`.
     pub max_branching: u128,
+    /// How successors are computed.
+    pub backend: Backend,
 }
+
+/// How the explicit engine computes successors.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum Backend {
+    /// The interpreter; on a search still running after [`AUTO_NATIVE_AFTER`], the native
+    /// generator is compiled in the background and used from the next block on.
+    #[default]
+    Auto,
+    /// Always the IR's register-code interpreter.
+    Interpreter,
+    /// The native generator from the start (compiled before the search; the interpreter when
+    /// no C compiler works, with a note).
+    Native,
+}
+
+impl Backend {
+    /// The option word: `auto`, `interpreter`, `native`.
+    pub fn as_str(self) -> &'static str {
+        match self {
+            Backend::Auto => "auto",
+            Backend::Interpreter => "interpreter",
+            Backend::Native => "native",
+        }
+    }
+}
+
+/// With [`Backend::Auto`], a search still running after this long compiles the native
+/// generator (smaller runs never pay for the compiler).
+pub const AUTO_NATIVE_AFTER: Duration = Duration::from_millis(300);
 
 impl Default for Options {
     fn default() -> Self {
@@ -71,6 +107,7 @@ impl Default for Options {
             threads: 0,
             force: false,
             max_branching: DEFAULT_MAX_BRANCHING,
+            backend: Backend::Auto,
         }
     }
 }
@@ -219,6 +256,13 @@ pub struct Stats {
     pub all_decided: bool,
     /// Coverage items never hit (indices into `Program::covers`), after a complete run.
     pub dead: Option<Vec<u32>>,
+    /// What computed the successors: `interpreter`, or `native` when the native generator was
+    /// used (from the start, or from some block on).
+    pub backend: &'static str,
+    /// Time to generate, compile (or find in the cache) and load the native generator.
+    pub native_build_time: Option<Duration>,
+    /// Why the native generator was not used, or was abandoned, when it was asked for.
+    pub native_note: Option<String>,
 }
 
 impl Stats {
@@ -316,22 +360,78 @@ pub fn verify(
         .num_threads(threads)
         .build()
         .map_err(|e| format!("cannot start {threads} threads: {e}"))?;
+    let native = match opts.backend {
+        Backend::Interpreter => None,
+        Backend::Auto | Backend::Native => native::NativeRun::new(&space),
+    };
+    if opts.backend == Backend::Native {
+        match &native {
+            Some(n) => n.build_now(native::Pending::new(program, &packer)),
+            None => {
+                stats.native_note = Some("too many input vectors to list for native code".into())
+            }
+        }
+    }
+    let started = std::sync::atomic::AtomicBool::new(opts.backend != Backend::Auto);
+    // With `auto`, a search that is still running compiles the native generator.
+    let watch = |pr: &Progress| {
+        if let Some(n) = native.as_ref() {
+            if pr.elapsed >= AUTO_NATIVE_AFTER
+                && !started.swap(true, std::sync::atomic::Ordering::Relaxed)
+            {
+                n.build_in_background(native::Pending::new(program, &packer));
+            }
+        }
+        if let Some(f) = progress {
+            f(pr);
+        }
+    };
     let exp = Expander {
         program,
         packer: &packer,
         space: &space,
         specs: &specs,
         coverage: true,
+        native: native.as_ref(),
     };
-    let report = pool.install(|| {
-        if packer.bits <= 63 {
-            run::<u64>(&exp, opts, start, stats, progress)
-        } else if packer.bits <= 127 {
-            run::<u128>(&exp, opts, start, stats, progress)
-        } else {
-            run::<Box<[u64]>>(&exp, opts, start, stats, progress)
-        }
-    });
+    let explore = |exp: &Expander, stats: Stats| {
+        pool.install(|| {
+            if packer.bits <= 63 {
+                run::<u64>(exp, opts, start, stats, Some(&watch))
+            } else if packer.bits <= 127 {
+                run::<u128>(exp, opts, start, stats, Some(&watch))
+            } else {
+                run::<Box<[u64]>>(exp, opts, start, stats, Some(&watch))
+            }
+        })
+    };
+    let mut report = explore(&exp, stats.clone());
+    let Some(n) = native.as_ref() else {
+        report.stats.backend = "interpreter";
+        return Ok(report);
+    };
+    report.stats.backend = if n.ready().is_some() {
+        "native"
+    } else {
+        "interpreter"
+    };
+    report.stats.native_build_time = n.ready().map(|g| g.build_time);
+    if let Some(why) = n.failure() {
+        report.stats.native_note = Some(why.to_string());
+    }
+    if let Some(what) = n.disagreement() {
+        // A bug of the code generator or of this engine: the interpreter is the reference.
+        let note = format!(
+            "the native code disagreed with the interpreter ({what}); the run was repeated with the interpreter — please report this"
+        );
+        let exp = Expander {
+            native: None,
+            ..exp
+        };
+        report = explore(&exp, stats);
+        report.stats.backend = "interpreter";
+        report.stats.native_note = Some(note);
+    }
     Ok(report)
 }
 

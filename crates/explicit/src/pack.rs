@@ -343,6 +343,39 @@ impl Key for Box<[u64]> {
     }
 }
 
+/// Where one state slot lives in a packed vector, for code that packs on its own (the native
+/// successor generator): bits `offset .. offset + width` hold `value - lo`.
+#[derive(Clone, Copy, Debug)]
+pub struct FieldLayout {
+    /// Index of the slot in the state.
+    pub slot: usize,
+    /// Lowest value of the slot.
+    pub lo: i64,
+    /// Bits (0 for a constant slot).
+    pub width: u32,
+    /// First bit in the packed vector.
+    pub offset: u32,
+}
+
+impl FieldLayout {
+    /// `width` low bits set.
+    pub fn mask(&self) -> u64 {
+        mask(self.width)
+    }
+}
+
+impl Packer {
+    /// Every state slot's place, in slot order.
+    pub fn layout(&self) -> impl Iterator<Item = FieldLayout> + '_ {
+        self.fields.iter().enumerate().map(|(slot, f)| FieldLayout {
+            slot,
+            lo: f.lo,
+            width: f.width,
+            offset: f.offset,
+        })
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -122,6 +122,9 @@ pub fn json(p: &Program, source: &str, rep: &Report, cexs: &[Option<Cex>], meta:
             "complete": s.complete,
             "limit": s.limit.as_ref().map(|l| json!({"kind": l.name(), "message": l.describe()})),
             "dead": dead,
+            "backend": s.backend,
+            "native_build_s": s.native_build_time.map(|t| t.as_secs_f64()),
+            "native_note": s.native_note,
         }
     })
 }
@@ -278,8 +281,13 @@ fn stats_line(s: &Stats) -> String {
         .branching_after_assumes
         .map(|b| format!(", {b} after assumes"))
         .unwrap_or_default();
+    let native = match (s.native_build_time, &s.native_note) {
+        (_, Some(note)) => format!("\nnative code not used: {note}"),
+        (Some(t), None) => format!(", native code (built in {:.2} s)", t.as_secs_f64()),
+        (None, None) => String::new(),
+    };
     format!(
-        "{} states, {} transitions, depth {}, {:.2} s ({:.0} states/s), {:.1} bytes/state, peak {}, {} thread(s), {}-bit states, branching {}{after}\n",
+        "{} states, {} transitions, depth {}, {:.2} s ({:.0} states/s), {:.1} bytes/state, peak {}, {} thread(s), {}-bit states, branching {}{after}{native}\n",
         s.states,
         s.transitions,
         s.depth,

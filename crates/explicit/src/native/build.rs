@@ -1,0 +1,97 @@
+//! Compiling a generated successor generator into a shared library, with a cache.
+//!
+//! The compiler is `$CC`, else `cc`. Libraries are cached in `$STATECHECK_CACHE_DIR`, else
+//! `<temp dir>/statecheck-native`, under the hash of the source and the compiler command; the
+//! source is stored beside its library and compared in full before a cached library is used,
+//! so a hash collision costs a compilation, never a wrong library. A library is written under
+//! a temporary name and renamed into place, so concurrent runs never load half a file.
+
+use std::hash::{Hash, Hasher};
+use std::path::{Path, PathBuf};
+use std::process::Command;
+
+/// Flags of every compilation (the generated code is C99; warnings are not for the user).
+/// Hidden visibility (only `sc_expand` is exported) lets the compiler inline the step function.
+const FLAGS: [&str; 6] = [
+    "-std=gnu99",
+    "-O2",
+    "-fPIC",
+    "-shared",
+    "-fvisibility=hidden",
+    "-w",
+];
+
+/// The compiler command.
+fn compiler() -> String {
+    std::env::var("CC")
+        .ok()
+        .filter(|c| !c.trim().is_empty())
+        .unwrap_or_else(|| "cc".to_string())
+}
+
+/// The cache directory.
+fn cache_dir() -> PathBuf {
+    std::env::var_os("STATECHECK_CACHE_DIR")
+        .map(PathBuf::from)
+        .unwrap_or_else(|| std::env::temp_dir().join("statecheck-native"))
+}
+
+/// The path of a shared library built from `source`, compiling it unless the cache has it.
+pub(crate) fn library(source: &str) -> Result<PathBuf, String> {
+    let cc = compiler();
+    let mut h = std::collections::hash_map::DefaultHasher::new();
+    source.hash(&mut h);
+    cc.hash(&mut h);
+    FLAGS.hash(&mut h);
+    let stem = format!("sc_{:016x}", h.finish());
+    let dir = cache_dir();
+    std::fs::create_dir_all(&dir)
+        .map_err(|e| format!("cannot create the cache directory {}: {e}", dir.display()))?;
+    let c_path = dir.join(format!("{stem}.c"));
+    let lib_path = dir.join(format!("{stem}.{}", std::env::consts::DLL_EXTENSION));
+    let cached =
+        lib_path.exists() && std::fs::read_to_string(&c_path).is_ok_and(|text| text == source);
+    if cached {
+        return Ok(lib_path);
+    }
+    let unique = format!(
+        "{stem}.{}.{}",
+        std::process::id(),
+        std::time::SystemTime::now()
+            .duration_since(std::time::UNIX_EPOCH)
+            .map_or(0, |d| d.as_nanos())
+    );
+    let tmp_c = dir.join(format!("{unique}.c"));
+    let tmp_lib = dir.join(format!("{unique}.tmp"));
+    std::fs::write(&tmp_c, source).map_err(|e| format!("cannot write {}: {e}", tmp_c.display()))?;
+    let result = compile(&cc, &tmp_c, &tmp_lib);
+    let placed = result.and_then(|()| {
+        std::fs::rename(&tmp_lib, &lib_path)
+            .and_then(|()| std::fs::rename(&tmp_c, &c_path))
+            .map_err(|e| format!("cannot place {}: {e}", lib_path.display()))
+    });
+    let _ = std::fs::remove_file(&tmp_c);
+    let _ = std::fs::remove_file(&tmp_lib);
+    placed.map(|()| lib_path)
+}
+
+/// Run the compiler on one file.
+fn compile(cc: &str, c: &Path, lib: &Path) -> Result<(), String> {
+    let out = Command::new(cc)
+        .args(FLAGS)
+        .arg("-o")
+        .arg(lib)
+        .arg(c)
+        .output()
+        .map_err(|e| format!("cannot run the C compiler `{cc}`: {e}"))?;
+    if out.status.success() {
+        return Ok(());
+    }
+    let err = String::from_utf8_lossy(&out.stderr);
+    let first: Vec<&str> = err.lines().take(5).collect();
+    Err(format!(
+        "the C compiler `{cc}` failed ({}): {}",
+        out.status,
+        first.join(" | ")
+    ))
+}
