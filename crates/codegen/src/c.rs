@@ -159,7 +159,9 @@ impl Names {
 /// [`generate`], for a model checker that runs the step function itself: the outputs struct
 /// gains `uint8_t *cover_hits_`, and every coverage item of the program sets
 /// `o->cover_hits_[id] = 1` when it is hit (the caller points it at one byte per item of
-/// [`Program::covers`]). Everything else is exactly the code of [`generate`].
+/// [`Program::covers`]); the step function is `static inline` (GCC's `always_inline`), to be
+/// compiled in one translation unit with the checker's driver. Everything else is exactly
+/// the code of [`generate`].
 pub fn generate_counting_covers(p: &Program, src: &Source, prefix: &str) -> CFiles {
     let prefix = ident(prefix).to_lowercase();
     let mut n = Names::new(p, &prefix);
@@ -274,7 +276,8 @@ fn header(p: &Program, src: &Source, n: &Names) -> String {
     );
     let _ = writeln!(
         h,
-        "/* One tick; returns SC_OK or the run-time error that stopped it (o->error_site). */\nint {pf}_step({pf}_state *s, const {pf}_inputs *in, {pf}_outputs *o);"
+        "/* One tick; returns SC_OK or the run-time error that stopped it (o->error_site). */\n{}int {pf}_step({pf}_state *s, const {pf}_inputs *in, {pf}_outputs *o);",
+        step_storage(n)
     );
     let _ = writeln!(
         h,
@@ -282,6 +285,16 @@ fn header(p: &Program, src: &Source, n: &Names) -> String {
     );
     let _ = writeln!(h, "\n#endif");
     h
+}
+
+/// Storage class of the step function: inlined into the checker's driver, which is compiled
+/// in the same translation unit (see [`generate_counting_covers`]).
+fn step_storage(n: &Names) -> &'static str {
+    if n.count_covers {
+        "static inline __attribute__((always_inline)) "
+    } else {
+        ""
+    }
 }
 
 fn slot_ref(p: &Program, n: &Names, s: SlotId) -> String {
@@ -326,7 +339,8 @@ fn source(p: &Program, src: &Source, n: &Names) -> String {
     }
     let _ = writeln!(
         c,
-        "int {pf}_step({pf}_state *s, const {pf}_inputs *in, {pf}_outputs *o) {{\n    {pf}_inputs i_ = *in;\n    {pf}_inputs *i = &i_;\n    (void)i;"
+        "{}int {pf}_step({pf}_state *s, const {pf}_inputs *in, {pf}_outputs *o) {{\n    {pf}_inputs i_ = *in;\n    {pf}_inputs *i = &i_;\n    (void)i;",
+        step_storage(n)
     );
     c.push_str(&body(p, src, n, &p.step));
     c.push_str("    return SC_OK;\n}\n\n");
