@@ -60,6 +60,10 @@ pub(crate) struct Searched<K> {
     pub elapsed: Duration,
 }
 
+/// What inserting one block into one shard produced: the new states (per bucket, in
+/// generation order) and the per-state properties they decide.
+type Inserted<K> = (Vec<Vec<Cand<K>>>, Vec<StateFind>);
+
 /// Run a search. With `track = Some(d)`, keep every layer with parent links and stop once
 /// layer `d` is built (for counterexample reconstruction).
 pub(crate) fn search<K: Key>(
@@ -136,19 +140,17 @@ pub(crate) fn search<K: Key>(
                 }
             }
             let check_states = exp.checks_states(&pending);
-            let new: Vec<(Vec<Cand<K>>, Vec<StateFind>)> = visited
+            let new: Vec<Inserted<K>> = visited
                 .shards
                 .par_iter_mut()
                 .zip(per_shard)
                 .map(|(shard, buckets)| {
                     let mut checker = check_states.then(|| StateCheck::new(exp, &pending));
-                    let mut fresh = Vec::new();
-                    for c in buckets.into_iter().flatten() {
-                        if shard.insert(&c.key, c.key.hash64()) {
-                            if let Some(ch) = checker.as_mut() {
-                                ch.check(&c);
-                            }
-                            fresh.push(c);
+                    let mut fresh = buckets;
+                    for bucket in &mut fresh {
+                        match checker.as_mut() {
+                            Some(ch) => shard.insert_retain(bucket, |c| &c.key, |c| ch.check(c)),
+                            None => shard.insert_retain(bucket, |c| &c.key, |_| {}),
                         }
                     }
                     (fresh, checker.map(|c| c.found).unwrap_or_default())
@@ -177,7 +179,12 @@ pub(crate) fn search<K: Key>(
                     ));
                 }
             }
-            for c in new.into_iter().flat_map(|(fresh, _)| fresh) {
+            let n_new: usize = new.iter().flat_map(|(f, _)| f).map(Vec::len).sum();
+            next.reserve(n_new);
+            if tracking {
+                next_parents.reserve(n_new);
+            }
+            for c in new.into_iter().flat_map(|(fresh, _)| fresh).flatten() {
                 next.push(c.key);
                 if tracking {
                     next_parents.push((c.parent, c.input));

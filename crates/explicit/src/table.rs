@@ -6,7 +6,8 @@
 //! capacities need not be powers of two; for 8-byte keys that keeps the set between 10 and 15
 //! bytes per state. Shards let the threads insert in parallel (one shard per task); the shard of
 //! a key depends only on its hash, so the order in which new states are found does not depend on
-//! the number of threads.
+//! the number of threads. Keys are inserted in batches ([`Shard::insert_retain`]) that prefetch
+//! the slot of a key a few places ahead, so that the cache misses of a large table overlap.
 
 use crate::pack::Key;
 
@@ -40,30 +41,75 @@ impl<K: Key> Shard<K> {
     /// only then).
     #[inline]
     pub fn insert(&mut self, key: &K, hash: u64) -> bool {
-        if (self.len + 1) * 5 > self.slots.len() * 4 {
+        if self.over_load(1) {
             self.grow();
         }
-        let start = index(hash, self.slots.len());
-        // Linear probing: from the hash's slot to the end, then from the start (the table is
-        // never full, so one of the two finds the key or a free slot).
-        let hit = |s: &K| s.is_empty() || s == key;
-        let (head, tail) = self.slots.split_at_mut(start);
-        let Some(slot) = tail
-            .iter_mut()
-            .find(|s| hit(s))
-            .or_else(|| head.iter_mut().find(|s| hit(s)))
-        else {
-            // Not reached: the load factor keeps free slots. Growing makes room anyway.
-            self.grow();
-            return self.insert(key, hash);
-        };
-        if !slot.is_empty() {
-            return false;
+        self.place(key, hash)
+    }
+
+    /// Insert the keys of `items` in order and keep only the items whose key was new (in
+    /// their order), calling `on_new` on each of them as it is found. While inserting one
+    /// key, the slot of the key [`AHEAD`] places later is prefetched, so that the cache misses
+    /// of a large table overlap instead of following each other.
+    pub fn insert_retain<T>(
+        &mut self,
+        items: &mut Vec<T>,
+        key: impl Fn(&T) -> &K,
+        mut on_new: impl FnMut(&T),
+    ) {
+        let n = items.len();
+        // Hashes of the next `AHEAD` items, by position modulo `AHEAD`.
+        let mut ring = [0u64; AHEAD];
+        for (h, it) in ring.iter_mut().zip(items.iter()) {
+            *h = key(it).hash64();
+            prefetch(&self.slots, index(*h, self.slots.len()));
         }
-        *slot = key.clone();
-        self.heap += key.heap_bytes();
-        self.len += 1;
-        true
+        let mut kept = 0;
+        for r in 0..n {
+            let h = ring[r % AHEAD];
+            if let Some(ahead) = items.get(r + AHEAD) {
+                let ha = key(ahead).hash64();
+                ring[r % AHEAD] = ha;
+                prefetch(&self.slots, index(ha, self.slots.len()));
+            }
+            if self.insert(key(&items[r]), h) {
+                on_new(&items[r]);
+                items.swap(kept, r);
+                kept += 1;
+            }
+        }
+        items.truncate(kept);
+    }
+
+    /// True when `n` more keys would take the load past 0.8.
+    #[inline]
+    fn over_load(&self, n: usize) -> bool {
+        (self.len + n) * 5 > self.slots.len() * 4
+    }
+
+    /// Insert without checking the load (there must be a free slot).
+    #[inline]
+    fn place(&mut self, key: &K, hash: u64) -> bool {
+        let cap = self.slots.len();
+        let mut i = index(hash, cap);
+        // Linear probing, wrapping at the end; the load factor keeps free slots, so the loop
+        // ends at the key or at a free slot.
+        loop {
+            let slot = &mut self.slots[i];
+            if slot.is_empty() {
+                *slot = key.clone();
+                self.heap += key.heap_bytes();
+                self.len += 1;
+                return true;
+            }
+            if slot == key {
+                return false;
+            }
+            i += 1;
+            if i == cap {
+                i = 0;
+            }
+        }
     }
 
     fn grow(&mut self) {
@@ -97,6 +143,26 @@ impl<K: Key> Shard<K> {
     /// True when nothing is stored.
     pub fn is_empty(&self) -> bool {
         self.len == 0
+    }
+}
+
+/// How far ahead [`Shard::insert_retain`] prefetches.
+const AHEAD: usize = 8;
+
+/// Hint the processor to fetch `slots[i]` into the cache (nothing when out of range or not
+/// on x86-64).
+#[inline(always)]
+fn prefetch<K>(slots: &[K], i: usize) {
+    #[cfg(target_arch = "x86_64")]
+    if let Some(s) = slots.get(i) {
+        let p: *const K = s;
+        // The prefetch intrinsic is `unsafe` only because it is a `target_feature` function
+        // (SSE, always present on x86-64); it never faults, whatever the address, and here
+        // the address is that of an element of `slots`.
+        #[allow(unsafe_code)]
+        unsafe {
+            core::arch::x86_64::_mm_prefetch::<{ core::arch::x86_64::_MM_HINT_T0 }>(p.cast());
+        }
     }
 }
 
@@ -163,6 +229,23 @@ mod tests {
         assert_eq!(v.len(), 100_000);
         let per = v.bytes() as f64 / v.len() as f64;
         assert!(per <= 16.0, "{per} bytes per key");
+    }
+
+    #[test]
+    fn insert_retain_keeps_the_new_items_in_order() {
+        let mut s: Shard<u64> = Shard::default();
+        let mut first: Vec<u64> = (1..=300).rev().collect();
+        let mut seen = Vec::new();
+        s.insert_retain(&mut first, |k| k, |k| seen.push(*k));
+        assert_eq!(first, (1..=300).rev().collect::<Vec<_>>());
+        assert_eq!(seen, first);
+        // Duplicates within the batch and of earlier keys are dropped; the rest keep their order.
+        let mut second: Vec<u64> = vec![5, 400, 7, 401, 400, 299, 402, 401];
+        seen.clear();
+        s.insert_retain(&mut second, |k| k, |k| seen.push(*k));
+        assert_eq!(second, [400, 401, 402]);
+        assert_eq!(seen, second);
+        assert_eq!(s.len(), 303);
     }
 
     #[test]
