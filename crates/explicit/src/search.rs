@@ -104,6 +104,10 @@ pub(crate) fn search<K: Key>(
             0
         }) as u64;
     let tracking = track.is_some();
+    // One per-state checker per shard (a machine each), reset for every block.
+    let mut checkers: Vec<StateCheck<'_, '_>> = (0..SHARDS)
+        .map(|_| StateCheck::new(exp, &pending))
+        .collect();
     let end = 'outer: loop {
         if limits.depth.is_some_and(|k| depth >= k) || track.is_some_and(|d| depth >= d) {
             break End::Depth;
@@ -113,6 +117,7 @@ pub(crate) fn search<K: Key>(
         for (b, blk) in frontier.chunks(block).enumerate() {
             let base = b * block;
             let pend = &pending;
+            let check_states = exp.checks_states(pend);
             let outs: Vec<ChunkOut<K>> = blk
                 .par_chunks(chunk)
                 .enumerate()
@@ -139,21 +144,22 @@ pub(crate) fn search<K: Key>(
                     per_shard[s].push(bucket);
                 }
             }
-            let check_states = exp.checks_states(&pending);
+            let pend = &pending;
             let new: Vec<Inserted<K>> = visited
                 .shards
                 .par_iter_mut()
+                .zip(checkers.par_iter_mut())
                 .zip(per_shard)
-                .map(|(shard, buckets)| {
-                    let mut checker = check_states.then(|| StateCheck::new(exp, &pending));
-                    let mut fresh = buckets;
+                .map(|((shard, checker), mut fresh)| {
+                    checker.reset(pend);
                     for bucket in &mut fresh {
-                        match checker.as_mut() {
-                            Some(ch) => shard.insert_retain(bucket, |c| &c.key, |c| ch.check(c)),
-                            None => shard.insert_retain(bucket, |c| &c.key, |_| {}),
+                        if check_states {
+                            shard.insert_retain(bucket, |c| &c.key, |c| checker.check(c));
+                        } else {
+                            shard.insert_retain(bucket, |c| &c.key, |_| {});
                         }
                     }
-                    (fresh, checker.map(|c| c.found).unwrap_or_default())
+                    (fresh, std::mem::take(&mut checker.found))
                 })
                 .collect();
             // Per-state findings: the first in generation order over all shards.
