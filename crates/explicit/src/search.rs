@@ -9,7 +9,7 @@
 
 use crate::expand::{Cand, ChunkOut, Expander, Found, StateCheck, StateFind};
 use crate::pack::Key;
-use crate::table::{Visited, SHARDS};
+use crate::table::{Shard, Visited, SHARDS};
 use crate::{Limit, Progress};
 use rayon::prelude::*;
 use statecheck_ir::Machine;
@@ -63,6 +63,30 @@ pub(crate) struct Searched<K> {
 /// What inserting one block into one shard produced: the new states (per bucket, in
 /// generation order) and the per-state properties they decide.
 type Inserted<K> = (Vec<Vec<Cand<K>>>, Vec<StateFind>);
+
+/// Insert a block's successors of one shard, in generation order; keep the new ones and check
+/// the per-state properties on them (with a checker).
+#[inline(never)]
+fn insert_shard<K: Key>(
+    shard: &mut Shard<K>,
+    mut fresh: Vec<Vec<Cand<K>>>,
+    checker: Option<&mut StateCheck<'_, '_>>,
+) -> Inserted<K> {
+    match checker {
+        Some(ch) => {
+            for bucket in &mut fresh {
+                shard.insert_retain(bucket, |c| &c.key, |c| ch.check(c));
+            }
+            (fresh, std::mem::take(&mut ch.found))
+        }
+        None => {
+            for bucket in &mut fresh {
+                shard.insert_retain(bucket, |c| &c.key, |_| {});
+            }
+            (fresh, Vec::new())
+        }
+    }
+}
 
 /// Run a search. With `track = Some(d)`, keep every layer with parent links and stop once
 /// layer `d` is built (for counterexample reconstruction).
@@ -150,16 +174,9 @@ pub(crate) fn search<K: Key>(
                 .par_iter_mut()
                 .zip(checkers.par_iter_mut())
                 .zip(per_shard)
-                .map(|((shard, checker), mut fresh)| {
+                .map(|((shard, checker), fresh)| {
                     checker.reset(pend);
-                    for bucket in &mut fresh {
-                        if check_states {
-                            shard.insert_retain(bucket, |c| &c.key, |c| checker.check(c));
-                        } else {
-                            shard.insert_retain(bucket, |c| &c.key, |_| {});
-                        }
-                    }
-                    (fresh, std::mem::take(&mut checker.found))
+                    insert_shard(shard, fresh, check_states.then_some(checker))
                 })
                 .collect();
             // Per-state findings: the first in generation order over all shards.
