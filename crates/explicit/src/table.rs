@@ -4,7 +4,8 @@
 //! No control bytes and no stored hashes: a slot is a key, [`Key::empty`] marks a free one.
 //! Tables grow by 1.5× at a load of 0.8 and index by multiply-shift range reduction, so
 //! capacities need not be powers of two; for 8-byte keys that keeps the set between 10 and 15
-//! bytes per state. Shards let the threads insert in parallel (one shard per task); the shard of
+//! bytes per state. Large tables grow in place (a reallocation, then every key moved to its new
+//! place), so that growing does not touch fresh memory for the part already in use. Shards let the threads insert in parallel (one shard per task); the shard of
 //! a key depends only on its hash, so the order in which new states are found does not depend on
 //! the number of threads. Keys are inserted in batches ([`Shard::insert_retain`]) that prefetch
 //! the slot of a key a few places ahead, so that the cache misses of a large table overlap.
@@ -64,6 +65,8 @@ impl<K: Key> Shard<K> {
             *h = key(it).hash64();
             prefetch(&self.slots, index(*h, self.slots.len()));
         }
+        // When the whole batch fits under the load limit, no key can make the table grow.
+        let room = !self.over_load(n);
         let mut kept = 0;
         for r in 0..n {
             let h = ring[r % AHEAD];
@@ -72,7 +75,10 @@ impl<K: Key> Shard<K> {
                 ring[r % AHEAD] = ha;
                 prefetch(&self.slots, index(ha, self.slots.len()));
             }
-            if self.insert(key(&items[r]), h) {
+            if !room && self.over_load(1) {
+                self.grow();
+            }
+            if self.place(key(&items[r]), h) {
                 on_new(&items[r]);
                 items.swap(kept, r);
                 kept += 1;
@@ -112,8 +118,20 @@ impl<K: Key> Shard<K> {
         }
     }
 
+    /// Grow by 1.5×: small tables into a fresh one, large ones in place.
+    #[cold]
+    #[inline(never)]
     fn grow(&mut self) {
         let cap = (self.slots.len() * 3 / 2).max(64);
+        if self.slots.len() * std::mem::size_of::<K>() < IN_PLACE_BYTES {
+            self.grow_by_copy(cap);
+        } else {
+            self.grow_in_place(cap);
+        }
+    }
+
+    /// Move every key into a fresh table of `cap` slots.
+    fn grow_by_copy(&mut self, cap: usize) {
         let old = std::mem::replace(&mut self.slots, vec![K::empty(); cap]);
         for k in old {
             if k.is_empty() {
@@ -127,6 +145,49 @@ impl<K: Key> Shard<K> {
                 }
             }
             self.slots[i] = k;
+        }
+    }
+
+    /// Grow to `cap` slots in place: the slots are reallocated (which keeps the pages already
+    /// in use, where a fresh table would take a page fault on every page again) and every key
+    /// is moved to its place in the larger table.
+    fn grow_in_place(&mut self, cap: usize) {
+        let old_cap = self.slots.len();
+        self.slots.reserve_exact(cap - old_cap);
+        self.slots.resize(cap, K::empty());
+        // Keys are moved from the end backwards. When the key at `p` moves, every key above
+        // `p` is at its final place (a key's new place is about 1.5× its old one), so there a
+        // slot is free when empty; at `p` and below, `done` marks the final places taken
+        // (rare: wrapping around, or far from home) and a key not yet moved is displaced to
+        // move on in turn.
+        let mut done = Bits::new(old_cap);
+        let mut low = false;
+        for p in (0..old_cap).rev() {
+            if self.slots[p].is_empty() || (low && done.get(p)) {
+                continue;
+            }
+            let mut k = std::mem::replace(&mut self.slots[p], K::empty());
+            loop {
+                let mut i = index(k.hash64(), cap);
+                while if i > p {
+                    !self.slots[i].is_empty()
+                } else {
+                    done.get(i)
+                } {
+                    i += 1;
+                    if i == cap {
+                        i = 0;
+                    }
+                }
+                if i <= p {
+                    done.set(i);
+                    low = true;
+                }
+                k = std::mem::replace(&mut self.slots[i], k);
+                if k.is_empty() {
+                    break;
+                }
+            }
         }
     }
 
@@ -145,6 +206,29 @@ impl<K: Key> Shard<K> {
         self.len == 0
     }
 }
+
+/// A fixed-size bit set.
+struct Bits(Vec<u64>);
+
+impl Bits {
+    fn new(n: usize) -> Bits {
+        Bits(vec![0; n.div_ceil(64)])
+    }
+
+    #[inline]
+    fn get(&self, i: usize) -> bool {
+        self.0[i / 64] >> (i % 64) & 1 != 0
+    }
+
+    #[inline]
+    fn set(&mut self, i: usize) {
+        self.0[i / 64] |= 1 << (i % 64);
+    }
+}
+
+/// Tables of at least this many bytes grow in place ([`Shard::grow_in_place`]); smaller ones,
+/// which the allocator serves from memory it already holds, are copied (fewer instructions).
+const IN_PLACE_BYTES: usize = 128 << 10;
 
 /// How far ahead [`Shard::insert_retain`] prefetches.
 const AHEAD: usize = 8;
@@ -223,7 +307,7 @@ mod tests {
         for k in 1..=100_000u64 {
             assert!(v.insert(&k));
         }
-        for k in (1..=100_000u64).step_by(7) {
+        for k in 1..=100_000u64 {
             assert!(!v.insert(&k));
         }
         assert_eq!(v.len(), 100_000);
@@ -246,6 +330,31 @@ mod tests {
         assert_eq!(second, [400, 401, 402]);
         assert_eq!(seen, second);
         assert_eq!(s.len(), 303);
+    }
+
+    #[test]
+    fn large_tables_grow_in_place() {
+        // One shard, far past the size where growing switches to in place.
+        let mut s: Shard<u64> = Shard::default();
+        let n = 200_000u64;
+        for k in 1..=n {
+            assert!(s.insert(&k, k.hash64()));
+        }
+        assert!(s.bytes() > 4 * IN_PLACE_BYTES);
+        for k in 1..=n {
+            assert!(!s.insert(&k, k.hash64()));
+        }
+        assert_eq!(s.len(), n as usize);
+        let mut b: Shard<Box<[u64]>> = Shard::default();
+        for k in 0..30_000u64 {
+            let key: Box<[u64]> = vec![k, !k].into();
+            assert!(b.insert(&key, key.hash64()));
+        }
+        for k in 0..30_000u64 {
+            let key: Box<[u64]> = vec![k, !k].into();
+            assert!(!b.insert(&key, key.hash64()));
+        }
+        assert_eq!(b.len(), 30_000);
     }
 
     #[test]
