@@ -65,7 +65,8 @@ pub(crate) struct Searched<K> {
 type Inserted<K> = (Vec<Vec<Cand<K>>>, Vec<StateFind>);
 
 /// Insert a block's successors of one shard, in generation order; keep the new ones and check
-/// the per-state properties on them (with a checker).
+/// the per-state properties on them (with a checker). Called once per shard and block, so kept
+/// out of line: profiles then show the insertion phase on its own.
 #[inline(never)]
 fn insert_shard<K: Key>(
     shard: &mut Shard<K>,
@@ -207,11 +208,11 @@ pub(crate) fn search<K: Key>(
             if tracking {
                 next_parents.reserve(n_new);
             }
-            for c in new.into_iter().flat_map(|(fresh, _)| fresh).flatten() {
-                next.push(c.key);
+            for bucket in new.into_iter().flat_map(|(fresh, _)| fresh) {
                 if tracking {
-                    next_parents.push((c.parent, c.input));
+                    next_parents.extend(bucket.iter().map(|c| (c.parent, c.input)));
                 }
+                next.extend(bucket.into_iter().map(|c| c.key));
             }
             let table = visited.bytes() as u64;
             let held = table
