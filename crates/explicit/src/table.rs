@@ -5,10 +5,12 @@
 //! Tables grow by 1.5× at a load of 0.8 and index by multiply-shift range reduction, so
 //! capacities need not be powers of two; for 8-byte keys that keeps the set between 10 and 15
 //! bytes per state. Large tables grow in place (a reallocation, then every key moved to its new
-//! place), so that growing does not touch fresh memory for the part already in use. Shards let the threads insert in parallel (one shard per task); the shard of
-//! a key depends only on its hash, so the order in which new states are found does not depend on
-//! the number of threads. Keys are inserted in batches ([`Shard::insert_retain`]) that prefetch
-//! the slot of a key a few places ahead, so that the cache misses of a large table overlap.
+//! place), so that growing does not touch fresh memory for the part already in use.
+//!
+//! Shards let the threads insert in parallel (one shard per task); the shard of a key depends
+//! only on its hash, so the order in which new states are found does not depend on the number
+//! of threads. Keys are inserted in batches ([`Shard::insert_retain`]) that prefetch the slot of
+//! a key a few places ahead, so that the cache misses of a large table overlap.
 
 use crate::pack::Key;
 
@@ -169,11 +171,7 @@ impl<K: Key> Shard<K> {
             let mut k = std::mem::replace(&mut self.slots[p], K::empty());
             loop {
                 let mut i = index(k.hash64(), cap);
-                while if i > p {
-                    !self.slots[i].is_empty()
-                } else {
-                    done.get(i)
-                } {
+                while taken(&self.slots, &done, p, i) {
                     i += 1;
                     if i == cap {
                         i = 0;
@@ -207,6 +205,17 @@ impl<K: Key> Shard<K> {
     }
 }
 
+/// While [`Shard::grow_in_place`] moves the key from `p`: true when slot `i` holds a key at
+/// its final place.
+#[inline]
+fn taken<K: Key>(slots: &[K], done: &Bits, p: usize, i: usize) -> bool {
+    if i > p {
+        !slots[i].is_empty()
+    } else {
+        done.get(i)
+    }
+}
+
 /// A fixed-size bit set.
 struct Bits(Vec<u64>);
 
@@ -217,7 +226,7 @@ impl Bits {
 
     #[inline]
     fn get(&self, i: usize) -> bool {
-        self.0[i / 64] >> (i % 64) & 1 != 0
+        (self.0[i / 64] >> (i % 64)) & 1 != 0
     }
 
     #[inline]
@@ -237,6 +246,8 @@ const AHEAD: usize = 8;
 /// on x86-64).
 #[inline(always)]
 fn prefetch<K>(slots: &[K], i: usize) {
+    #[cfg(not(target_arch = "x86_64"))]
+    let _ = (slots, i);
     #[cfg(target_arch = "x86_64")]
     if let Some(s) = slots.get(i) {
         let p: *const K = s;
