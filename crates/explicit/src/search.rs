@@ -142,7 +142,6 @@ pub(crate) fn search<K: Key>(
         for (b, blk) in frontier.chunks(block).enumerate() {
             let base = b * block;
             let pend = &pending;
-            let check_states = exp.checks_states(pend);
             let outs: Vec<ChunkOut<K>> = blk
                 .par_chunks(chunk)
                 .enumerate()
@@ -170,6 +169,7 @@ pub(crate) fn search<K: Key>(
                 }
             }
             let pend = &pending;
+            let check_states = exp.checks_states(pend);
             let new: Vec<Inserted<K>> = visited
                 .shards
                 .par_iter_mut()
