@@ -275,13 +275,14 @@ pub(crate) struct Tick<'k, K> {
 /// layer, and the input position of the transition that found the state.
 pub(crate) type StateFind = (usize, u32, u32);
 
-/// Checks the per-state properties on newly found states (one per shard task).
+/// Checks the per-state properties on newly found states (one per shard, kept for the whole
+/// search).
 pub(crate) struct StateCheck<'a, 'p> {
     exp: &'a Expander<'p>,
     m: Machine<'p>,
-    state: Vec<i64>,
     words: Vec<u64>,
-    open: Vec<bool>,
+    /// The still-open per-state properties, in declaration order.
+    watch: Vec<usize>,
     /// The first new state (in generation order) deciding each property.
     pub found: Vec<StateFind>,
 }
@@ -289,33 +290,50 @@ pub(crate) struct StateCheck<'a, 'p> {
 impl<'a, 'p> StateCheck<'a, 'p> {
     /// A checker for the still-pending per-state properties.
     pub fn new(exp: &'a Expander<'p>, pending: &[bool]) -> Self {
-        StateCheck {
+        let mut c = StateCheck {
             exp,
             m: Machine::new(exp.program),
-            state: vec![0; exp.program.n_state],
             words: vec![0; exp.packer.words],
-            open: pending
-                .iter()
-                .zip(exp.specs)
-                .map(|(p, s)| *p && s.per_state)
-                .collect(),
+            watch: Vec::new(),
             found: Vec::new(),
-        }
+        };
+        exp.packer.set_constants(c.m.state_mut());
+        c.reset(pending);
+        c
+    }
+
+    /// Start over (no findings) with the per-state properties still pending.
+    pub fn reset(&mut self, pending: &[bool]) {
+        self.found.clear();
+        self.watch.clear();
+        self.watch.extend(
+            pending
+                .iter()
+                .zip(self.exp.specs)
+                .enumerate()
+                .filter(|(_, (p, s))| **p && s.per_state)
+                .map(|(i, _)| i),
+        );
     }
 
     /// Check a new state reached by `c`.
+    #[inline]
     pub fn check<K: Key>(&mut self, c: &Cand<K>) {
-        if !self.open.iter().any(|o| *o) {
+        if self.watch.is_empty() {
             return;
         }
+        // Unpacked straight into the machine's state registers, whose constant slots are set
+        // once and for all (nothing else writes the state: properties are pure).
         self.exp
             .packer
-            .unpack(&c.key, &mut self.words, &mut self.state);
-        self.m.load_state(&self.state);
-        for (i, spec) in self.exp.specs.iter().enumerate() {
-            if self.open[i] && decides(&mut self.m, spec.check) {
-                self.open[i] = false;
+            .unpack_live(&c.key, &mut self.words, self.m.state_mut());
+        let mut j = 0;
+        while let Some(&i) = self.watch.get(j) {
+            if decides(&mut self.m, self.exp.specs[i].check) {
                 self.found.push((i, c.parent, c.input));
+                self.watch.remove(j);
+            } else {
+                j += 1;
             }
         }
     }

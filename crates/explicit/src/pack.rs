@@ -142,6 +142,23 @@ impl Packer {
         key.unpack(self, scratch, state);
     }
 
+    /// Unpack the fields of non-zero width of a key into a state whose constant slots are
+    /// already set (by [`Packer::set_constants`] or an earlier unpacking); cheaper than
+    /// [`Packer::unpack`] when many slots are constant.
+    #[inline]
+    pub fn unpack_live<K: Key>(&self, key: &K, scratch: &mut [u64], state: &mut [i64]) {
+        key.unpack_live(self, scratch, state);
+    }
+
+    /// Set the constant slots (fields of width zero) of `state` to their only value.
+    pub fn set_constants(&self, state: &mut [i64]) {
+        for (f, v) in self.fields.iter().zip(state.iter_mut()) {
+            if f.width == 0 {
+                *v = f.lo;
+            }
+        }
+    }
+
     /// Pack a state of at most 128 bits straight into an integer (no word buffer): the hot
     /// path of the 128-bit keys, one 64-bit word at a time (variable 128-bit shifts are slow).
     #[inline]
@@ -182,12 +199,27 @@ impl Packer {
         }
     }
 
-    /// Unpack a vector of at most 128 bits (its live fields; the others are constant).
+    /// Unpack the live fields of a vector of at most 64 bits (the others are constant).
+    #[inline]
+    fn unpack_u64_live(&self, packed: u64, state: &mut [i64]) {
+        for f in &self.live {
+            if let Some(v) = state.get_mut(f.slot as usize) {
+                *v =
+                    f.lo.wrapping_add(((packed >> (f.offset & 63)) & f.mask) as i64);
+            }
+        }
+    }
+
+    /// Unpack a vector of at most 128 bits.
     #[inline]
     fn unpack_u128(&self, packed: u128, state: &mut [i64]) {
-        for (f, v) in self.fields.iter().zip(state.iter_mut()) {
-            *v = f.lo;
-        }
+        self.set_constants(state);
+        self.unpack_u128_live(packed, state);
+    }
+
+    /// Unpack the live fields of a vector of at most 128 bits (the others are constant).
+    #[inline]
+    fn unpack_u128_live(&self, packed: u128, state: &mut [i64]) {
         let w = [packed as u64, (packed >> 64) as u64];
         for f in &self.live {
             let lo = w[(f.word & 1) as usize] >> f.sh;
@@ -247,6 +279,11 @@ pub trait Key: Clone + Eq + Send + Sync + 'static {
         self.to_words(scratch);
         packer.unpack_words(scratch, state);
     }
+    /// Unpack the fields of non-zero width into `state`, whose constant slots are already set
+    /// (see [`Packer::unpack_live`]).
+    fn unpack_live(&self, packer: &Packer, scratch: &mut [u64], state: &mut [i64]) {
+        self.unpack(packer, scratch, state);
+    }
 }
 
 /// MurmurHash3's 64-bit finaliser.
@@ -286,6 +323,10 @@ impl Key for u64 {
     fn unpack(&self, packer: &Packer, _: &mut [u64], state: &mut [i64]) {
         packer.unpack_u64(self - 1, state);
     }
+    #[inline]
+    fn unpack_live(&self, packer: &Packer, _: &mut [u64], state: &mut [i64]) {
+        packer.unpack_u64_live(self - 1, state);
+    }
 }
 
 impl Key for u128 {
@@ -319,6 +360,10 @@ impl Key for u128 {
     #[inline]
     fn unpack(&self, packer: &Packer, _: &mut [u64], state: &mut [i64]) {
         packer.unpack_u128(self - 1, state);
+    }
+    #[inline]
+    fn unpack_live(&self, packer: &Packer, _: &mut [u64], state: &mut [i64]) {
+        packer.unpack_u128_live(self - 1, state);
     }
 }
 
@@ -453,6 +498,17 @@ mod tests {
                 p.unpack(&k, &mut words, &mut back);
             }
             assert_eq!(back, state);
+            // Live fields only, over a state whose constants were set once.
+            let mut live = vec![0i64; ranges.len()];
+            p.set_constants(&mut live);
+            if p.bits <= 63 {
+                let k: u64 = p.pack(&state, &mut words);
+                p.unpack_live(&k, &mut words, &mut live);
+            } else {
+                let k: u128 = p.pack(&state, &mut words);
+                p.unpack_live(&k, &mut words, &mut live);
+            }
+            assert_eq!(live, state);
         }
     }
 

@@ -9,7 +9,7 @@
 
 use crate::expand::{Cand, ChunkOut, Expander, Found, StateCheck, StateFind};
 use crate::pack::Key;
-use crate::table::{Visited, SHARDS};
+use crate::table::{Shard, Visited, SHARDS};
 use crate::{Limit, Progress};
 use rayon::prelude::*;
 use statecheck_ir::Machine;
@@ -60,6 +60,35 @@ pub(crate) struct Searched<K> {
     pub elapsed: Duration,
 }
 
+/// What inserting one block into one shard produced: the new states (per bucket, in
+/// generation order) and the per-state properties they decide.
+type Inserted<K> = (Vec<Vec<Cand<K>>>, Vec<StateFind>);
+
+/// Insert a block's successors of one shard, in generation order; keep the new ones and check
+/// the per-state properties on them (with a checker). Called once per shard and block, so kept
+/// out of line: profiles then show the insertion phase on its own.
+#[inline(never)]
+fn insert_shard<K: Key>(
+    shard: &mut Shard<K>,
+    mut fresh: Vec<Vec<Cand<K>>>,
+    checker: Option<&mut StateCheck<'_, '_>>,
+) -> Inserted<K> {
+    match checker {
+        Some(ch) => {
+            for bucket in &mut fresh {
+                shard.insert_retain(bucket, |c| &c.key, |c| ch.check(c));
+            }
+            (fresh, std::mem::take(&mut ch.found))
+        }
+        None => {
+            for bucket in &mut fresh {
+                shard.insert_retain(bucket, |c| &c.key, |_| {});
+            }
+            (fresh, Vec::new())
+        }
+    }
+}
+
 /// Run a search. With `track = Some(d)`, keep every layer with parent links and stop once
 /// layer `d` is built (for counterexample reconstruction).
 pub(crate) fn search<K: Key>(
@@ -100,6 +129,10 @@ pub(crate) fn search<K: Key>(
             0
         }) as u64;
     let tracking = track.is_some();
+    // One per-state checker per shard (a machine each), reset for every block.
+    let mut checkers: Vec<StateCheck<'_, '_>> = (0..SHARDS)
+        .map(|_| StateCheck::new(exp, &pending))
+        .collect();
     let end = 'outer: loop {
         if limits.depth.is_some_and(|k| depth >= k) || track.is_some_and(|d| depth >= d) {
             break End::Depth;
@@ -135,23 +168,16 @@ pub(crate) fn search<K: Key>(
                     per_shard[s].push(bucket);
                 }
             }
-            let check_states = exp.checks_states(&pending);
-            let new: Vec<(Vec<Cand<K>>, Vec<StateFind>)> = visited
+            let pend = &pending;
+            let check_states = exp.checks_states(pend);
+            let new: Vec<Inserted<K>> = visited
                 .shards
                 .par_iter_mut()
+                .zip(checkers.par_iter_mut())
                 .zip(per_shard)
-                .map(|(shard, buckets)| {
-                    let mut checker = check_states.then(|| StateCheck::new(exp, &pending));
-                    let mut fresh = Vec::new();
-                    for c in buckets.into_iter().flatten() {
-                        if shard.insert(&c.key, c.key.hash64()) {
-                            if let Some(ch) = checker.as_mut() {
-                                ch.check(&c);
-                            }
-                            fresh.push(c);
-                        }
-                    }
-                    (fresh, checker.map(|c| c.found).unwrap_or_default())
+                .map(|((shard, checker), fresh)| {
+                    checker.reset(pend);
+                    insert_shard(shard, fresh, check_states.then_some(checker))
                 })
                 .collect();
             // Per-state findings: the first in generation order over all shards.
@@ -177,11 +203,16 @@ pub(crate) fn search<K: Key>(
                     ));
                 }
             }
-            for c in new.into_iter().flat_map(|(fresh, _)| fresh) {
-                next.push(c.key);
+            let n_new: usize = new.iter().flat_map(|(f, _)| f).map(Vec::len).sum();
+            next.reserve(n_new);
+            if tracking {
+                next_parents.reserve(n_new);
+            }
+            for bucket in new.into_iter().flat_map(|(fresh, _)| fresh) {
                 if tracking {
-                    next_parents.push((c.parent, c.input));
+                    next_parents.extend(bucket.iter().map(|c| (c.parent, c.input)));
                 }
+                next.extend(bucket.into_iter().map(|c| c.key));
             }
             let table = visited.bytes() as u64;
             let held = table

@@ -4,9 +4,13 @@
 //! No control bytes and no stored hashes: a slot is a key, [`Key::empty`] marks a free one.
 //! Tables grow by 1.5× at a load of 0.8 and index by multiply-shift range reduction, so
 //! capacities need not be powers of two; for 8-byte keys that keeps the set between 10 and 15
-//! bytes per state. Shards let the threads insert in parallel (one shard per task); the shard of
-//! a key depends only on its hash, so the order in which new states are found does not depend on
-//! the number of threads.
+//! bytes per state. Large tables grow in place (a reallocation, then every key moved to its new
+//! place), so that growing does not touch fresh memory for the part already in use.
+//!
+//! Shards let the threads insert in parallel (one shard per task); the shard of a key depends
+//! only on its hash, so the order in which new states are found does not depend on the number
+//! of threads. Keys are inserted in batches ([`Shard::insert_retain`]) that prefetch the slot of
+//! a key a few places ahead, so that the cache misses of a large table overlap.
 
 use crate::pack::Key;
 
@@ -40,34 +44,96 @@ impl<K: Key> Shard<K> {
     /// only then).
     #[inline]
     pub fn insert(&mut self, key: &K, hash: u64) -> bool {
-        if (self.len + 1) * 5 > self.slots.len() * 4 {
+        if self.over_load(1) {
             self.grow();
         }
-        let start = index(hash, self.slots.len());
-        // Linear probing: from the hash's slot to the end, then from the start (the table is
-        // never full, so one of the two finds the key or a free slot).
-        let hit = |s: &K| s.is_empty() || s == key;
-        let (head, tail) = self.slots.split_at_mut(start);
-        let Some(slot) = tail
-            .iter_mut()
-            .find(|s| hit(s))
-            .or_else(|| head.iter_mut().find(|s| hit(s)))
-        else {
-            // Not reached: the load factor keeps free slots. Growing makes room anyway.
-            self.grow();
-            return self.insert(key, hash);
-        };
-        if !slot.is_empty() {
-            return false;
-        }
-        *slot = key.clone();
-        self.heap += key.heap_bytes();
-        self.len += 1;
-        true
+        self.place(key, hash)
     }
 
+    /// Insert the keys of `items` in order and keep only the items whose key was new (in
+    /// their order), calling `on_new` on each of them as it is found. While inserting one
+    /// key, the slot of the key [`AHEAD`] places later is prefetched, so that the cache misses
+    /// of a large table overlap instead of following each other.
+    pub fn insert_retain<T>(
+        &mut self,
+        items: &mut Vec<T>,
+        key: impl Fn(&T) -> &K,
+        mut on_new: impl FnMut(&T),
+    ) {
+        let n = items.len();
+        // Hashes of the next `AHEAD` items, by position modulo `AHEAD`.
+        let mut ring = [0u64; AHEAD];
+        for (h, it) in ring.iter_mut().zip(items.iter()) {
+            *h = key(it).hash64();
+            prefetch(&self.slots, index(*h, self.slots.len()));
+        }
+        // When the whole batch fits under the load limit, no key can make the table grow.
+        let room = !self.over_load(n);
+        let mut kept = 0;
+        for r in 0..n {
+            let h = ring[r % AHEAD];
+            if let Some(ahead) = items.get(r + AHEAD) {
+                let ha = key(ahead).hash64();
+                ring[r % AHEAD] = ha;
+                prefetch(&self.slots, index(ha, self.slots.len()));
+            }
+            if !room && self.over_load(1) {
+                self.grow();
+            }
+            if self.place(key(&items[r]), h) {
+                on_new(&items[r]);
+                items.swap(kept, r);
+                kept += 1;
+            }
+        }
+        items.truncate(kept);
+    }
+
+    /// True when `n` more keys would take the load past 0.8.
+    #[inline]
+    fn over_load(&self, n: usize) -> bool {
+        (self.len + n) * 5 > self.slots.len() * 4
+    }
+
+    /// Insert without checking the load (there must be a free slot).
+    #[inline]
+    fn place(&mut self, key: &K, hash: u64) -> bool {
+        let cap = self.slots.len();
+        let mut i = index(hash, cap);
+        // Linear probing, wrapping at the end; the load factor keeps free slots, so the loop
+        // ends at the key or at a free slot.
+        loop {
+            let slot = &mut self.slots[i];
+            if slot.is_empty() {
+                *slot = key.clone();
+                self.heap += key.heap_bytes();
+                self.len += 1;
+                return true;
+            }
+            if slot == key {
+                return false;
+            }
+            i += 1;
+            if i == cap {
+                i = 0;
+            }
+        }
+    }
+
+    /// Grow by 1.5×: small tables into a fresh one, large ones in place.
+    #[cold]
+    #[inline(never)]
     fn grow(&mut self) {
         let cap = (self.slots.len() * 3 / 2).max(64);
+        if self.slots.len() * std::mem::size_of::<K>() < IN_PLACE_BYTES {
+            self.grow_by_copy(cap);
+        } else {
+            self.grow_in_place(cap);
+        }
+    }
+
+    /// Move every key into a fresh table of `cap` slots.
+    fn grow_by_copy(&mut self, cap: usize) {
         let old = std::mem::replace(&mut self.slots, vec![K::empty(); cap]);
         for k in old {
             if k.is_empty() {
@@ -84,6 +150,45 @@ impl<K: Key> Shard<K> {
         }
     }
 
+    /// Grow to `cap` slots in place: the slots are reallocated (which keeps the pages already
+    /// in use, where a fresh table would take a page fault on every page again) and every key
+    /// is moved to its place in the larger table.
+    fn grow_in_place(&mut self, cap: usize) {
+        let old_cap = self.slots.len();
+        self.slots.reserve_exact(cap - old_cap);
+        self.slots.resize(cap, K::empty());
+        // Keys are moved from the end backwards. When the key at `p` moves, every key above
+        // `p` is at its final place (a key's new place is about 1.5× its old one), so there a
+        // slot is free when empty; at `p` and below, `done` marks the final places taken
+        // (rare: wrapping around, or far from home) and a key not yet moved is displaced to
+        // move on in turn.
+        let mut done = Bits::new(old_cap);
+        let mut low = false;
+        for p in (0..old_cap).rev() {
+            if self.slots[p].is_empty() || (low && done.get(p)) {
+                continue;
+            }
+            let mut k = std::mem::replace(&mut self.slots[p], K::empty());
+            loop {
+                let mut i = index(k.hash64(), cap);
+                while taken(&self.slots, &done, p, i) {
+                    i += 1;
+                    if i == cap {
+                        i = 0;
+                    }
+                }
+                if i <= p {
+                    done.set(i);
+                    low = true;
+                }
+                k = std::mem::replace(&mut self.slots[i], k);
+                if k.is_empty() {
+                    break;
+                }
+            }
+        }
+    }
+
     /// Bytes held by this shard.
     pub fn bytes(&self) -> usize {
         self.slots.len() * std::mem::size_of::<K>() + self.heap
@@ -97,6 +202,62 @@ impl<K: Key> Shard<K> {
     /// True when nothing is stored.
     pub fn is_empty(&self) -> bool {
         self.len == 0
+    }
+}
+
+/// While [`Shard::grow_in_place`] moves the key from `p`: true when slot `i` holds a key at
+/// its final place.
+#[inline]
+fn taken<K: Key>(slots: &[K], done: &Bits, p: usize, i: usize) -> bool {
+    if i > p {
+        !slots[i].is_empty()
+    } else {
+        done.get(i)
+    }
+}
+
+/// A fixed-size bit set.
+struct Bits(Vec<u64>);
+
+impl Bits {
+    fn new(n: usize) -> Bits {
+        Bits(vec![0; n.div_ceil(64)])
+    }
+
+    #[inline]
+    fn get(&self, i: usize) -> bool {
+        (self.0[i / 64] >> (i % 64)) & 1 != 0
+    }
+
+    #[inline]
+    fn set(&mut self, i: usize) {
+        self.0[i / 64] |= 1 << (i % 64);
+    }
+}
+
+/// Tables of at least this many bytes grow in place ([`Shard::grow_in_place`]); smaller ones,
+/// which the allocator serves from memory it already holds, are copied (fewer instructions).
+const IN_PLACE_BYTES: usize = 128 << 10;
+
+/// How far ahead [`Shard::insert_retain`] prefetches.
+const AHEAD: usize = 8;
+
+/// Hint the processor to fetch `slots[i]` into the cache (nothing when out of range or not
+/// on x86-64).
+#[inline(always)]
+fn prefetch<K>(slots: &[K], i: usize) {
+    #[cfg(not(target_arch = "x86_64"))]
+    let _ = (slots, i);
+    #[cfg(target_arch = "x86_64")]
+    if let Some(s) = slots.get(i) {
+        let p: *const K = s;
+        // The prefetch intrinsic is `unsafe` only because it is a `target_feature` function
+        // (SSE, always present on x86-64); it never faults, whatever the address, and here
+        // the address is that of an element of `slots`.
+        #[allow(unsafe_code)]
+        unsafe {
+            core::arch::x86_64::_mm_prefetch::<{ core::arch::x86_64::_MM_HINT_T0 }>(p.cast());
+        }
     }
 }
 
@@ -157,12 +318,54 @@ mod tests {
         for k in 1..=100_000u64 {
             assert!(v.insert(&k));
         }
-        for k in (1..=100_000u64).step_by(7) {
+        for k in 1..=100_000u64 {
             assert!(!v.insert(&k));
         }
         assert_eq!(v.len(), 100_000);
         let per = v.bytes() as f64 / v.len() as f64;
         assert!(per <= 16.0, "{per} bytes per key");
+    }
+
+    #[test]
+    fn insert_retain_keeps_the_new_items_in_order() {
+        let mut s: Shard<u64> = Shard::default();
+        let mut first: Vec<u64> = (1..=300).rev().collect();
+        let mut seen = Vec::new();
+        s.insert_retain(&mut first, |k| k, |k| seen.push(*k));
+        assert_eq!(first, (1..=300).rev().collect::<Vec<_>>());
+        assert_eq!(seen, first);
+        // Duplicates within the batch and of earlier keys are dropped; the rest keep their order.
+        let mut second: Vec<u64> = vec![5, 400, 7, 401, 400, 299, 402, 401];
+        seen.clear();
+        s.insert_retain(&mut second, |k| k, |k| seen.push(*k));
+        assert_eq!(second, [400, 401, 402]);
+        assert_eq!(seen, second);
+        assert_eq!(s.len(), 303);
+    }
+
+    #[test]
+    fn large_tables_grow_in_place() {
+        // One shard, far past the size where growing switches to in place.
+        let mut s: Shard<u64> = Shard::default();
+        let n = 200_000u64;
+        for k in 1..=n {
+            assert!(s.insert(&k, k.hash64()));
+        }
+        assert!(s.bytes() > 4 * IN_PLACE_BYTES);
+        for k in 1..=n {
+            assert!(!s.insert(&k, k.hash64()));
+        }
+        assert_eq!(s.len(), n as usize);
+        let mut b: Shard<Box<[u64]>> = Shard::default();
+        for k in 0..30_000u64 {
+            let key: Box<[u64]> = vec![k, !k].into();
+            assert!(b.insert(&key, key.hash64()));
+        }
+        for k in 0..30_000u64 {
+            let key: Box<[u64]> = vec![k, !k].into();
+            assert!(!b.insert(&key, key.hash64()));
+        }
+        assert_eq!(b.len(), 30_000);
     }
 
     #[test]

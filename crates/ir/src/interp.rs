@@ -172,6 +172,13 @@ impl<'p> Machine<'p> {
         self.regs[..self.program.n_state].copy_from_slice(state);
     }
 
+    /// The persistent state, to overwrite in place (for instance by unpacking a stored state
+    /// straight into it, without the copy of [`Machine::load_state`]).
+    #[inline]
+    pub fn state_mut(&mut self) -> &mut [i64] {
+        &mut self.regs[..self.program.n_state]
+    }
+
     /// Overwrite the persistent state and the tick's inputs (`inputs` holds one value per
     /// input, in [`Program::inputs`] order): one copy when the input slots follow the state,
     /// as the layout places them.
