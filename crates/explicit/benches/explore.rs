@@ -8,7 +8,7 @@
 
 mod common;
 
-use statecheck_explicit::{verify, Backend, Options};
+use statecheck_explicit::{verify, Options};
 
 fn model(n: usize, m: usize) -> String {
     let mut pairs = Vec::new();
@@ -34,15 +34,7 @@ fn main() {
         .collect();
     let arg = |i: usize, d: usize| args.get(i).and_then(|s| s.parse().ok()).unwrap_or(d);
     let (n, m, threads) = (arg(0, 4), arg(1, 63), arg(2, 0));
-    let backend = match args.get(3).map(String::as_str) {
-        None | Some("native") => Backend::Native,
-        Some("interpreter") => Backend::Interpreter,
-        Some("auto") => Backend::Auto,
-        Some(other) => {
-            eprintln!("unknown backend {other}: native, interpreter or auto");
-            std::process::exit(2);
-        }
-    };
+    let backend = common::backend(args.get(3));
     let text = model(n, m);
     let program = common::bench_program(&text);
     let opts = Options {
@@ -72,18 +64,7 @@ fn main() {
         s.threads,
         s.time.as_secs_f64()
     );
-    println!(
-        "backend: {} (asked {}){}{}",
-        s.backend,
-        backend.as_str(),
-        s.native_build_time
-            .map(|t| format!(", native code built in {:.3} s", t.as_secs_f64()))
-            .unwrap_or_default(),
-        s.native_note
-            .as_ref()
-            .map(|n| format!(", note: {n}"))
-            .unwrap_or_default()
-    );
+    println!("{}", common::backend_line(s, backend));
     println!("states/s: {:.0}", s.states_per_s());
     println!(
         "transitions/s: {:.0}",

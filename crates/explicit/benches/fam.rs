@@ -8,8 +8,9 @@
 //! The product space is far too large to exhaust for N >= 2, so the run stops at
 //! `MAX_STATES` (an honest limit: everything before it is explored exactly as in a full run).
 //!
-//! `cargo bench -p statecheck-explicit --bench fam -- [N] [MAX_STATES] [THREADS]`
-//! (defaults 2 2000000 0 = all cores). Prints states/s, transitions/s and bytes per state.
+//! `cargo bench -p statecheck-explicit --bench fam -- [N] [MAX_STATES] [THREADS] [BACKEND]`
+//! (defaults 2 2000000 0 native; 0 threads = all cores; BACKEND `native`, `interpreter` or
+//! `auto`). Prints states/s, transitions/s and bytes per state.
 
 mod common;
 
@@ -67,8 +68,10 @@ fn main() {
         }
     };
     let program = common::bench_program(&text);
+    let backend = common::backend(args.get(3));
     let opts = Options {
         threads,
+        backend,
         max_states: Some(max_states),
         ..Options::default()
     };
@@ -98,6 +101,7 @@ fn main() {
         s.threads,
         s.time.as_secs_f64()
     );
+    println!("{}", common::backend_line(s, backend));
     println!("states/s: {:.0}", s.states_per_s());
     println!(
         "transitions/s: {:.0}",

@@ -396,7 +396,9 @@ pub fn verify(
     };
     let explore = |exp: &Expander, stats: Stats| {
         pool.install(|| {
-            if packer.bits <= 63 {
+            if packer.bits <= 31 {
+                run::<u32>(exp, opts, start, stats, Some(&watch))
+            } else if packer.bits <= 63 {
                 run::<u64>(exp, opts, start, stats, Some(&watch))
             } else if packer.bits <= 127 {
                 run::<u128>(exp, opts, start, stats, Some(&watch))

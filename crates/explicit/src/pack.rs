@@ -1,9 +1,9 @@
 //! Bit-packed state vectors: every state slot stored as `value - lo` in `width()` bits.
 //!
 //! A packed vector is a little sequence of 64-bit words; [`Key`] turns it into the value the
-//! visited set stores: a `u64` for vectors of up to 63 bits, a `u128` up to 127 bits, a boxed
-//! word slice beyond. The two integer keys store `packed + 1` so that 0 can mark an empty slot
-//! of the hash table.
+//! visited set stores: a `u32` for vectors of up to 31 bits, a `u64` up to 63 bits, a `u128` up
+//! to 127 bits, a boxed word slice beyond. The integer keys store `packed + 1` so that 0 can
+//! mark an empty slot of the hash table.
 
 use statecheck_ir::Program;
 
@@ -294,6 +294,39 @@ fn fmix(mut h: u64) -> u64 {
     h = h.wrapping_mul(0xc4ce_b9fe_1a85_ec53);
     h ^= h >> 33;
     h
+}
+
+impl Key for u32 {
+    fn from_words(words: &[u64]) -> Self {
+        words[0] as u32 + 1
+    }
+    fn to_words(&self, words: &mut [u64]) {
+        words[0] = u64::from(self - 1);
+    }
+    fn hash64(&self) -> u64 {
+        fmix(u64::from(*self))
+    }
+    fn empty() -> Self {
+        0
+    }
+    fn is_empty(&self) -> bool {
+        *self == 0
+    }
+    fn heap_bytes(&self) -> usize {
+        0
+    }
+    #[inline]
+    fn pack(packer: &Packer, state: &[i64], _: &mut [u64]) -> Self {
+        packer.pack_u64(state) as u32 + 1
+    }
+    #[inline]
+    fn unpack(&self, packer: &Packer, _: &mut [u64], state: &mut [i64]) {
+        packer.unpack_u64(u64::from(self - 1), state);
+    }
+    #[inline]
+    fn unpack_live(&self, packer: &Packer, _: &mut [u64], state: &mut [i64]) {
+        packer.unpack_u64_live(u64::from(self - 1), state);
+    }
 }
 
 impl Key for u64 {

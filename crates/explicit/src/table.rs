@@ -2,9 +2,9 @@
 //! linear probing.
 //!
 //! No control bytes and no stored hashes: a slot is a key, [`Key::empty`] marks a free one.
-//! Tables grow by 1.5× at a load of 0.8 and index by multiply-shift range reduction, so
-//! capacities need not be powers of two; for 8-byte keys that keeps the set between 10 and 15
-//! bytes per state. Large tables grow in place (a reallocation, then every key moved to its new
+//! Tables grow at a load of 0.8, by 2× for 4-byte keys and 1.5× for larger ones, and index by
+//! multiply-shift range reduction, so capacities need not be powers of two; that keeps the set
+//! between 5 and 10 bytes per state for 4-byte keys, and between 10 and 15 for 8-byte keys. Large tables grow in place (a reallocation, then every key moved to its new
 //! place), so that growing does not touch fresh memory for the part already in use.
 //!
 //! Shards let the threads insert in parallel (one shard per task); the shard of a key depends
@@ -14,12 +14,17 @@
 
 use crate::pack::Key;
 
+/// Bits of a hash that choose its shard (the top ones).
+const SHARD_BITS: u32 = 6;
+
 /// Number of shards (a fixed constant so that results do not depend on the thread count).
-pub const SHARDS: usize = 16;
+/// 64 shards keep the table of each small enough to stay in a core's cache while a batch of
+/// keys is inserted into it.
+pub const SHARDS: usize = 1 << SHARD_BITS;
 
 /// The shard of a hash.
 pub fn shard_of(hash: u64) -> usize {
-    (hash >> 60) as usize
+    (hash >> (64 - SHARD_BITS)) as usize
 }
 
 /// One open-addressing table.
@@ -124,7 +129,13 @@ impl<K: Key> Shard<K> {
     #[cold]
     #[inline(never)]
     fn grow(&mut self) {
-        let cap = (self.slots.len() * 3 / 2).max(64);
+        // Small keys can afford doubling (fewer rehashes) within 16 bytes per state.
+        let cap = if std::mem::size_of::<K>() <= 4 {
+            self.slots.len() * 2
+        } else {
+            self.slots.len() * 3 / 2
+        }
+        .max(64);
         if self.slots.len() * std::mem::size_of::<K>() < IN_PLACE_BYTES {
             self.grow_by_copy(cap);
         } else {
@@ -263,7 +274,7 @@ fn prefetch<K>(slots: &[K], i: usize) {
 
 /// Slot of a hash in a table of `cap` slots; the top bits choose the shard, so use the rest.
 fn index(hash: u64, cap: usize) -> usize {
-    ((u128::from(hash << 4) * cap as u128) >> 64) as usize
+    ((u128::from(hash << SHARD_BITS) * cap as u128) >> 64) as usize
 }
 
 /// The sharded visited set.

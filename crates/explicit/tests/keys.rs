@@ -1,4 +1,5 @@
-//! The engine on every key width (u64, u128, boxed words) and thread count, against counts
+//! The engine on three key widths (u32, u128, boxed words; u64 keys are the linear drive's in
+//! tests/native.rs) and thread count, against counts
 //! derived by hand: `n` independent modulo-(m+1) counters, at most one incremented per tick,
 //! give (m+1)^n states after tick 0 plus the pre-start state; the wide padding variables never
 //! change, so they only widen the packed vector.
@@ -29,6 +30,7 @@ fn program(n: usize, m: usize, pad: usize) -> statecheck_ir::Program {
 
 #[test]
 fn counts_and_shortest_cex_on_every_key_width() {
+    // 6 bits of counters, plus 3 × 40 bits per padding variable: u32, u128 and boxed keys.
     for pad in [0, 1, 3] {
         let p = program(3, 3, pad);
         let mut seen = Vec::new();
@@ -42,6 +44,10 @@ fn counts_and_shortest_cex_on_every_key_width() {
                 None,
             )
             .expect("runs");
+            let key = [31, 127, u32::MAX]
+                .iter()
+                .position(|&w| r.stats.state_bits <= w);
+            assert_eq!(key, [0, 1, 3].iter().position(|&p| p == pad));
             assert_eq!(
                 r.stats.states,
                 4 * 4 * 4 + 1,

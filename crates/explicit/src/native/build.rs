@@ -1,7 +1,8 @@
 //! Compiling a generated successor generator into a shared library, with a cache.
 //!
 //! The compiler is `$CC`, else `cc`. Libraries are cached in `$STATECHECK_CACHE_DIR`, else
-//! `<temp dir>/statecheck-native`, under the hash of the source and the compiler command; the
+//! `$XDG_CACHE_HOME/statecheck/native`, else `~/.cache/statecheck/native` (the temp dir only
+//! without a home), under the hash of the source and the compiler command; the
 //! source is stored beside its library and compared in full before a cached library is used,
 //! so a hash collision costs a compilation, never a wrong library. A library is written under
 //! a temporary name and renamed into place, so concurrent runs never load half a file.
@@ -29,10 +30,17 @@ fn compiler() -> String {
         .unwrap_or_else(|| "cc".to_string())
 }
 
-/// The cache directory.
+/// The cache directory: the user's own (a library is loaded and run from here, so never a
+/// directory that others can write to by default).
 fn cache_dir() -> PathBuf {
-    std::env::var_os("STATECHECK_CACHE_DIR")
-        .map(PathBuf::from)
+    let var = |v: &str| {
+        std::env::var_os(v)
+            .filter(|x| !x.is_empty())
+            .map(PathBuf::from)
+    };
+    var("STATECHECK_CACHE_DIR")
+        .or_else(|| var("XDG_CACHE_HOME").map(|d| d.join("statecheck/native")))
+        .or_else(|| var("HOME").map(|d| d.join(".cache/statecheck/native")))
         .unwrap_or_else(|| std::env::temp_dir().join("statecheck-native"))
 }
 
