@@ -70,7 +70,7 @@ impl Expander<'_> {
         let sp = self.space;
         // Only the per-transition properties; the others are checked per new state.
         let mut open = Open::new(self.specs, pending);
-        if open.watch.is_empty() {
+        if open.watch.iter().all(|&i| self.specs[i].after_tick) {
             if let Some((native, run)) = self.native.and_then(|r| r.ready().map(|n| (n, r))) {
                 return self.chunk_native(native, run, states, first_pos, open);
             }
@@ -160,25 +160,38 @@ impl Expander<'_> {
         match m.step() {
             Err(e) => self.record_error(e, &t, open, out),
             Ok(()) => {
-                if !open.watch.is_empty() {
-                    let specs = self.specs;
-                    open.watch.retain(|&i| {
-                        let hit = decides(m, specs[i].check);
-                        if hit {
-                            out.found.push(Found {
-                                prop: i,
-                                parent: t.key.clone(),
-                                input: t.input,
-                                error: None,
-                            });
-                        }
-                        !hit
-                    });
-                }
+                self.watch(m, &t, open, out);
                 let succ: K = self.packer.pack(m.state(), words);
                 push_successor(succ, &t, out);
             }
         }
+    }
+
+    /// Check the per-transition properties still open on the machine as the tick left it.
+    #[inline]
+    pub(crate) fn watch<K: Key>(
+        &self,
+        m: &mut Machine,
+        t: &Tick<'_, K>,
+        open: &mut Open,
+        out: &mut ChunkOut<K>,
+    ) {
+        if open.watch.is_empty() {
+            return;
+        }
+        let specs = self.specs;
+        open.watch.retain(|&i| {
+            let hit = decides(m, specs[i].check);
+            if hit {
+                out.found.push(Found {
+                    prop: i,
+                    parent: t.key.clone(),
+                    input: t.input,
+                    error: None,
+                });
+            }
+            !hit
+        });
     }
 
     /// A tick stopped by a run-time error: it decides its built-in property if still pending.
@@ -241,7 +254,7 @@ pub(crate) struct Open {
     /// Per property: a still-pending built-in (decided by a run-time error of the tick).
     builtin: Vec<bool>,
     /// Still-pending properties evaluated after every tick, in declaration order.
-    watch: Vec<usize>,
+    pub watch: Vec<usize>,
 }
 
 impl Open {

@@ -65,6 +65,9 @@ pub struct Options {
     pub max_branching: u128,
     /// How successors are computed.
     pub backend: Backend,
+    /// With native successors, expand one state in this many (by position in its layer) with
+    /// the interpreter too and compare; 0 never does (for tests of the native path alone).
+    pub native_sample: u32,
 }
 
 /// How the explicit engine computes successors.
@@ -108,6 +111,7 @@ impl Default for Options {
             force: false,
             max_branching: DEFAULT_MAX_BRANCHING,
             backend: Backend::Auto,
+            native_sample: 64,
         }
     }
 }
@@ -362,7 +366,7 @@ pub fn verify(
         .map_err(|e| format!("cannot start {threads} threads: {e}"))?;
     let native = match opts.backend {
         Backend::Interpreter => None,
-        Backend::Auto | Backend::Native => native::NativeRun::new(&space),
+        Backend::Auto | Backend::Native => native::NativeRun::new(&space, opts.native_sample),
     };
     if opts.backend == Backend::Native {
         match &native {

@@ -89,10 +89,13 @@ pub struct Spec {
     /// Decided by the state after the tick alone, so checked once per new state instead of on
     /// every transition (see [`mark_per_state`]).
     pub(crate) per_state: bool,
+    /// Decided by the state after the tick and the tick's inputs (no per-tick temporaries), so
+    /// the native successor generator's output is enough to check it (see [`mark_per_state`]).
+    pub(crate) after_tick: bool,
 }
 
-/// Mark the properties that can be checked once per newly found state instead of on every
-/// transition: those whose expressions read only persistent state slots (so their value
+/// Mark the properties that read only the state and the inputs ([`Spec::after_tick`]), and
+/// those that can be checked once per newly found state instead of on every transition: those whose expressions read only persistent state slots (so their value
 /// after a tick is a function of the successor state), unless the initial state decides them
 /// (the initial state is stored before any tick, so a transition back to it would not be
 /// checked again). `init_decides` tells whether the initial state decides a check.
@@ -104,12 +107,17 @@ pub(crate) fn mark_per_state(
     specs: &mut [Spec],
     mut init_decides: impl FnMut(Check) -> bool,
 ) {
+    let state = crate::reads::state_slots(program);
+    let state_and_inputs = state.start..crate::reads::input_slots(program).end;
     for s in specs {
         let exprs = s.check.exprs();
+        s.after_tick = exprs
+            .iter()
+            .all(|&e| crate::reads::reads_only(program, e, state_and_inputs.clone()));
         s.per_state = !exprs.is_empty()
             && exprs
                 .iter()
-                .all(|&e| crate::reads::reads_only(program, e, crate::reads::state_slots(program)))
+                .all(|&e| crate::reads::reads_only(program, e, state.clone()))
             && !init_decides(s.check);
     }
 }
@@ -140,6 +148,7 @@ pub fn all(program: &Program) -> Vec<Spec> {
                 kind,
                 check,
                 per_state: false,
+                after_tick: false,
             }
         })
         .collect();
@@ -148,6 +157,7 @@ pub fn all(program: &Program) -> Vec<Spec> {
         kind: PropKind::Builtin,
         check: Check::Builtin(b),
         per_state: false,
+        after_tick: false,
     }));
     out
 }

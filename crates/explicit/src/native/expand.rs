@@ -2,17 +2,15 @@
 //!
 //! Per state: the state-only assumes and the assumes mixing state and inputs are evaluated by
 //! the interpreter (they choose the input vectors), then one call of the generated code runs
-//! every chosen tick. A tick that stops with a run-time error, and every tick of one state in
-//! [`SAMPLE`], is run again by the interpreter: its result is the one recorded, and a
+//! every chosen tick. Per-transition properties (which read the tick's inputs) are evaluated
+//! by the interpreter on each successor with its inputs. A tick that stops with a run-time
+//! error, and every tick of one state in [`NativeRun::sample`] (by position in its layer), is
+//! run again by the interpreter: its result is the one recorded, and a
 //! difference is reported as a disagreement.
 
 use super::{Native, NativeRun};
 use crate::expand::{push_successor, ChunkOut, Expander, Open, Tick};
 use crate::pack::Key;
-
-/// One state in this many (by position in its layer) is expanded by both the generated code
-/// and the interpreter, and the two compared.
-const SAMPLE: u32 = 64;
 
 /// Scratch space of one chunk.
 struct Scratch {
@@ -20,6 +18,8 @@ struct Scratch {
     words: Vec<u64>,
     /// The source state's slot values.
     state: Vec<i64>,
+    /// A successor's slot values (for per-transition properties).
+    post: Vec<i64>,
     /// Packing scratch for the interpreter's successors.
     pack: Vec<u64>,
     /// The chosen input vectors, when mixed assumes choose.
@@ -33,7 +33,8 @@ struct Scratch {
 }
 
 impl Expander<'_> {
-    /// [`Expander::chunk`] with the native generator; `open` has no per-transition property.
+    /// [`Expander::chunk`] with the native generator; the per-transition properties of `open`
+    /// read only the state after the tick and the tick's inputs.
     pub(crate) fn chunk_native<K: Key>(
         &self,
         native: &Native,
@@ -54,6 +55,7 @@ impl Expander<'_> {
         let mut s = Scratch {
             words: vec![0; w],
             state: vec![0; p.n_state],
+            post: vec![0; p.n_state],
             pack: vec![0; w],
             idx: Vec::with_capacity(count),
             succ: vec![0; count * w],
@@ -94,7 +96,7 @@ impl Expander<'_> {
             ) {
                 run.disagree("the native generator was called with mismatched buffers".into());
             }
-            let sample = pos.is_multiple_of(SAMPLE);
+            let sample = run.sample != 0 && pos.is_multiple_of(run.sample);
             if (sample || s.status[..list.len()].iter().any(|&st| st != 0)) && !unpacked {
                 self.packer.unpack(key, &mut s.pack, &mut s.state);
             }
@@ -104,6 +106,14 @@ impl Expander<'_> {
                 let status = s.status[k];
                 let native_succ = K::from_words(&s.succ[k * w..k * w + w]);
                 if status == 0 && !sample {
+                    if !open.watch.is_empty() {
+                        // The open per-transition properties read the state after the tick
+                        // and the tick's inputs only.
+                        self.packer.unpack(&native_succ, &mut s.pack, &mut s.post);
+                        let at = v as usize * n;
+                        m.load(&s.post, &run.vectors[at..at + n]);
+                        self.watch(&mut m, &t, &mut open, &mut out);
+                    }
                     push_successor(native_succ, &t, &mut out);
                     continue;
                 }
@@ -121,6 +131,7 @@ impl Expander<'_> {
                         self.record_error(e, &t, &mut open, &mut out);
                     }
                     Ok(()) => {
+                        self.watch(&mut m, &t, &mut open, &mut out);
                         let succ: K = self.packer.pack(m.state(), &mut s.pack);
                         if status != 0 || succ != native_succ {
                             run.disagree(format!(

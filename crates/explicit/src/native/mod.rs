@@ -162,11 +162,15 @@ pub(crate) struct NativeRun {
     pub all: Vec<u32>,
     /// The first disagreement with the interpreter, if any.
     disagreement: OnceLock<String>,
+    /// One state in this many (by position in its layer) is expanded by the interpreter too
+    /// and compared; 0: none.
+    pub sample: u32,
 }
 
 impl NativeRun {
-    /// A run for `space`'s input vectors; `None` when there are too many to list.
-    pub fn new(space: &InputSpace) -> Option<NativeRun> {
+    /// A run for `space`'s input vectors, comparing one state in `sample` with the
+    /// interpreter; `None` when there are too many vectors to list.
+    pub fn new(space: &InputSpace, sample: u32) -> Option<NativeRun> {
         let n = space.slots.len();
         let (vectors, count) = match space.listed() {
             Some((flat, count)) => (flat.to_vec(), count),
@@ -192,6 +196,7 @@ impl NativeRun {
             vectors,
             all: (0..u32::try_from(count).ok()?).collect(),
             disagreement: OnceLock::new(),
+            sample,
         })
     }
 
