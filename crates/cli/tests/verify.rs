@@ -112,15 +112,28 @@ fn stat(v: &Value, key: &str) -> u64 {
         .unwrap_or_else(|| panic!("stats.{key} in {v}"))
 }
 
-/// Run on 1 and 2 threads; the verdicts, depths and counts must be identical.
+/// Run on 1 and 2 threads, and with native successors; the verdicts, depths and counts must
+/// be identical (and every counterexample of each run replays).
 fn both(file: &str, system: &str, extra: &[&str]) -> (i32, Value) {
     let (c1, v1) = verify(file, system, extra, "1");
     let (c2, v2) = verify(file, system, extra, "2");
+    let native_args: Vec<&str> = extra
+        .iter()
+        .copied()
+        .chain(["--backend", "native"])
+        .collect();
+    let (c3, v3) = verify(file, system, &native_args, "2");
     assert_eq!(c1, c2, "exit code independent of threads");
-    for key in ["states", "transitions", "depth"] {
+    assert_eq!(c2, c3, "exit code independent of the backend");
+    assert_eq!(v3["stats"]["backend"], "native", "{}", v3["stats"]);
+    for key in ["states", "transitions", "depth", "dead"] {
         assert_eq!(
             v1["stats"][key], v2["stats"][key],
             "stats.{key} independent of threads"
+        );
+        assert_eq!(
+            v2["stats"][key], v3["stats"][key],
+            "stats.{key} independent of the backend"
         );
     }
     let strip = |v: &Value| -> Vec<(Value, Value, Value)> {
@@ -140,6 +153,7 @@ fn both(file: &str, system: &str, extra: &[&str]) -> (i32, Value) {
             .unwrap_or_default()
     };
     assert_eq!(strip(&v1), strip(&v2), "results independent of threads");
+    assert_eq!(strip(&v2), strip(&v3), "results independent of the backend");
     (c2, v2)
 }
 

@@ -364,18 +364,7 @@ pub fn verify(
         .num_threads(threads)
         .build()
         .map_err(|e| format!("cannot start {threads} threads: {e}"))?;
-    let native = match opts.backend {
-        Backend::Interpreter => None,
-        Backend::Auto | Backend::Native => native::NativeRun::new(&space, opts.native_sample),
-    };
-    if opts.backend == Backend::Native {
-        match &native {
-            Some(n) => n.build_now(native::Pending::new(program, &packer)),
-            None => {
-                stats.native_note = Some("too many input vectors to list for native code".into())
-            }
-        }
-    }
+    let native = prepare_native(program, &packer, &space, opts, &mut stats);
     let started = std::sync::atomic::AtomicBool::new(opts.backend != Backend::Auto);
     // With `auto`, a search that is still running compiles the native generator.
     let watch = |pr: &Progress| {
@@ -439,6 +428,30 @@ pub fn verify(
         report.stats.native_note = Some(note);
     }
     Ok(report)
+}
+
+/// The native generator of a run, if `opts` asks for one: built now for [`Backend::Native`],
+/// later (if the search runs long enough) for [`Backend::Auto`].
+fn prepare_native(
+    program: &Program,
+    packer: &Packer,
+    space: &InputSpace,
+    opts: &Options,
+    stats: &mut Stats,
+) -> Option<native::NativeRun> {
+    if opts.backend == Backend::Interpreter {
+        return None;
+    }
+    let run = native::NativeRun::new(space, opts.native_sample);
+    if opts.backend == Backend::Native {
+        match &run {
+            Some(n) => n.build_now(native::Pending::new(program, packer)),
+            None => {
+                stats.native_note = Some("too many input vectors to list for native code".into())
+            }
+        }
+    }
+    run
 }
 
 /// Explore, then rebuild the counterexamples; `--timeout` counts from `start` and bounds both.
