@@ -391,7 +391,7 @@ pub fn verify(
         pool.install(|| {
             if packer.bits <= 31 {
                 run::<u32>(exp, opts, start, stats, Some(&watch))
-            } else if packer.bits <= 63 {
+            } else if packer.bits <= 64 {
                 run::<u64>(exp, opts, start, stats, Some(&watch))
             } else if packer.bits <= 127 {
                 run::<u128>(exp, opts, start, stats, Some(&watch))

@@ -1,9 +1,10 @@
 //! Bit-packed state vectors: every state slot stored as `value - lo` in `width()` bits.
 //!
 //! A packed vector is a little sequence of 64-bit words; [`Key`] turns it into the value the
-//! visited set stores: a `u32` for vectors of up to 31 bits, a `u64` up to 63 bits, a `u128` up
+//! visited set stores: a `u32` for vectors of up to 31 bits, a `u64` up to 64 bits, a `u128` up
 //! to 127 bits, a boxed word slice beyond. The integer keys store `packed + 1` so that 0 can
-//! mark an empty slot of the hash table.
+//! mark an empty slot of the hash table; for a 64-bit vector of all ones that wraps to 0, which
+//! the table keeps out of its slots (`table.rs`).
 
 use statecheck_ir::Program;
 
@@ -184,7 +185,7 @@ impl Packer {
         let mut acc = 0u64;
         for f in &self.live {
             let v = state.get(f.slot as usize).copied().unwrap_or(f.lo);
-            // Used for vectors of at most 63 bits: every live field starts below bit 63.
+            // Used for vectors of at most 64 bits: every live field starts below bit 64.
             acc |= (v.wrapping_sub(f.lo) as u64 & f.mask) << (f.offset & 63);
         }
         acc
@@ -331,10 +332,10 @@ impl Key for u32 {
 
 impl Key for u64 {
     fn from_words(words: &[u64]) -> Self {
-        words[0] + 1
+        words[0].wrapping_add(1)
     }
     fn to_words(&self, words: &mut [u64]) {
-        words[0] = self - 1;
+        words[0] = self.wrapping_sub(1);
     }
     fn hash64(&self) -> u64 {
         fmix(*self)
@@ -350,15 +351,15 @@ impl Key for u64 {
     }
     #[inline]
     fn pack(packer: &Packer, state: &[i64], _: &mut [u64]) -> Self {
-        packer.pack_u64(state) + 1
+        packer.pack_u64(state).wrapping_add(1)
     }
     #[inline]
     fn unpack(&self, packer: &Packer, _: &mut [u64], state: &mut [i64]) {
-        packer.unpack_u64(self - 1, state);
+        packer.unpack_u64(self.wrapping_sub(1), state);
     }
     #[inline]
     fn unpack_live(&self, packer: &Packer, _: &mut [u64], state: &mut [i64]) {
-        packer.unpack_u64_live(self - 1, state);
+        packer.unpack_u64_live(self.wrapping_sub(1), state);
     }
 }
 
@@ -513,6 +514,8 @@ mod tests {
                 (-1, (1 << 40) - 2),
                 (0, (1 << 40) - 1),
             ],
+            // Exactly 64 bits (a `u64` key).
+            vec![(0, (1 << 60) - 1), (-8, 7)],
             // A field ending exactly at bit 64, then one starting exactly there.
             vec![(0, (1 << 60) - 1), (0, 15), (3, 3), (0, (1 << 62) - 1)],
         ] {
@@ -521,7 +524,7 @@ mod tests {
             let state: Vec<i64> = ranges.iter().map(|&(lo, hi)| hi - (hi - lo) / 3).collect();
             p.pack_words(&state, &mut words);
             let mut back = vec![0i64; ranges.len()];
-            if p.bits <= 63 {
+            if p.bits <= 64 {
                 let k: u64 = p.pack(&state, &mut words);
                 assert_eq!(k - 1, words[0]);
                 p.unpack(&k, &mut words, &mut back);
@@ -534,7 +537,7 @@ mod tests {
             // Live fields only, over a state whose constants were set once.
             let mut live = vec![0i64; ranges.len()];
             p.set_constants(&mut live);
-            if p.bits <= 63 {
+            if p.bits <= 64 {
                 let k: u64 = p.pack(&state, &mut words);
                 p.unpack_live(&k, &mut words, &mut live);
             } else {

@@ -32,6 +32,10 @@ pub struct Shard<K> {
     slots: Vec<K>,
     len: usize,
     heap: usize,
+    /// Whether the key equal to [`Key::empty`] is stored: a real key only for 64-bit vectors
+    /// of all ones in `u64` keys (see `pack.rs`), kept here since a slot holding it would read
+    /// as free.
+    holds_empty: bool,
 }
 
 impl<K: Key> Default for Shard<K> {
@@ -40,6 +44,7 @@ impl<K: Key> Default for Shard<K> {
             slots: Vec::new(),
             len: 0,
             heap: 0,
+            holds_empty: false,
         }
     }
 }
@@ -100,9 +105,23 @@ impl<K: Key> Shard<K> {
         (self.len + n) * 5 > self.slots.len() * 4
     }
 
+    /// Insert the key equal to [`Key::empty`] (out of the slots).
+    #[cold]
+    fn place_empty(&mut self) -> bool {
+        if self.holds_empty {
+            return false;
+        }
+        self.holds_empty = true;
+        self.len += 1;
+        true
+    }
+
     /// Insert without checking the load (there must be a free slot).
     #[inline]
     fn place(&mut self, key: &K, hash: u64) -> bool {
+        if key.is_empty() {
+            return self.place_empty();
+        }
         let cap = self.slots.len();
         let mut i = index(hash, cap);
         // Linear probing, wrapping at the end; the load factor keeps free slots, so the loop
@@ -377,6 +396,20 @@ mod tests {
             assert!(!b.insert(&key, key.hash64()));
         }
         assert_eq!(b.len(), 30_000);
+    }
+
+    #[test]
+    fn the_key_that_marks_free_slots_is_stored_too() {
+        // `u64` keys of 64-bit vectors: the all-ones vector's key is 0, the free-slot mark.
+        let mut v: Visited<u64> = Visited::new();
+        assert!(v.insert(&0));
+        assert!(v.insert(&5));
+        assert!(!v.insert(&0));
+        for k in 1..=1000u64 {
+            v.insert(&k);
+        }
+        assert!(!v.insert(&0));
+        assert_eq!(v.len(), 1001);
     }
 
     #[test]

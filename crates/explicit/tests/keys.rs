@@ -74,3 +74,25 @@ fn counts_and_shortest_cex_on_every_key_width() {
         );
     }
 }
+
+#[test]
+fn a_64_bit_vector_of_all_ones_is_a_state_like_any_other() {
+    // x takes 62 bits, b one, the started flag one (a single state needs no bits): 64 bits,
+    // stored as `u64` keys, where the all-ones vector's key is the table's free-slot mark.
+    let text = "chart C {\n  input event go;\n  input event go2;\n  output x: int[0..4611686018427387903] = 0;\n  output b: bool = false;\n  initial S;\n  state S {\n    on go / { x = 4611686018427387903; b = true; };\n    on go2 / { x = 4611686018427387903; b = true; };\n  }\n}\nsystem S {\n  instance c: C;\n  reachable all_ones: c.x == 4611686018427387903 && c.b;\n}\n";
+    let (file, _) = statecheck_syntax::parse(text);
+    let (model, diags) = statecheck_model::check(&file);
+    assert!(!diags.iter().any(|d| d.is_error()), "{diags:?}");
+    let p = statecheck_ir::lower(&model, model.system("S").expect("system")).expect("lowers");
+    let r = verify(&p, &Options::default(), None).expect("runs");
+    assert_eq!(r.stats.state_bits, 64);
+    // Before tick 0; after tick 0 (started); after `go` or `go2` at tick 1 (all ones: three
+    // transitions lead there, and it must be stored once). Four input vectors per state.
+    assert_eq!((r.stats.states, r.stats.transitions), (3, 12));
+    assert_eq!(r.results[0].verdict, Verdict::Reachable);
+    assert_eq!(r.results[0].depth, 2);
+    assert!(
+        r.stats.bytes_per_state() <= 16.0 * 64.0,
+        "a u64 table of 64 slots"
+    );
+}
