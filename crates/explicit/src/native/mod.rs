@@ -92,6 +92,7 @@ impl Native {
     /// `n_inputs` values): `status[k]` is 0 and `out[k * words ..][..words]` the packed
     /// successor, or `status[k]` is the run-time error's status. Coverage items hit set their
     /// byte in `covers`. False (and nothing done) when a slice is too short for the call.
+    #[allow(unsafe_code)] // The call into the generated code, after every bound is checked.
     pub fn expand(
         &self,
         state: &[u64],
@@ -111,24 +112,11 @@ impl Native {
             && covers.len() >= self.covers.max(1)
             && u32::try_from(idx.len()).is_ok()
             && idx.iter().all(|&i| (i as usize) < n_vectors);
-        if fits {
-            self.call(state, vectors, idx, out, status, covers);
+        if !fits {
+            return false;
         }
-        fits
-    }
-
-    #[allow(unsafe_code)] // The call into the generated code; `expand` checked every bound.
-    fn call(
-        &self,
-        state: &[u64],
-        vectors: &[i64],
-        idx: &[u32],
-        out: &mut [u64],
-        status: &mut [i32],
-        covers: &mut [u8],
-    ) {
-        // SAFETY: `expand` checked that `sc_expand` reads at most `words` words of `state`,
-        // `n_inputs` values at each `idx[k] * n_inputs` of `vectors`, and writes at most
+        // SAFETY: checked above: `sc_expand` reads at most `words` words of `state`, `n_inputs`
+        // values at each `idx[k] * n_inputs` of `vectors`, and writes at most
         // `idx.len() * words` words of `out`, `idx.len()` statuses and bytes below the number
         // of coverage items of `covers`.
         unsafe {
@@ -142,6 +130,7 @@ impl Native {
                 covers.as_mut_ptr(),
             );
         }
+        true
     }
 }
 
@@ -212,14 +201,7 @@ impl NativeRun {
 
     /// Compile `pending` on this thread.
     pub fn build_now(&self, pending: Pending) {
-        match pending.build() {
-            Ok(n) => {
-                let _ = self.ready.set(n);
-            }
-            Err(e) => {
-                let _ = self.failed.set(e);
-            }
-        }
+        store(&self.ready, &self.failed, pending.build());
     }
 
     /// Compile `pending` on a thread of its own; the search picks the generator up when ready.
@@ -227,14 +209,7 @@ impl NativeRun {
         let (ready, failed) = (Arc::clone(&self.ready), Arc::clone(&self.failed));
         let spawned = std::thread::Builder::new()
             .name("statecheck-cc".into())
-            .spawn(move || match pending.build() {
-                Ok(n) => {
-                    let _ = ready.set(n);
-                }
-                Err(e) => {
-                    let _ = failed.set(e);
-                }
-            });
+            .spawn(move || store(&ready, &failed, pending.build()));
         if let Err(e) = spawned {
             let _ = self
                 .failed
@@ -250,5 +225,17 @@ impl NativeRun {
     /// The first disagreement with the interpreter, if any.
     pub fn disagreement(&self) -> Option<&str> {
         self.disagreement.get().map(String::as_str)
+    }
+}
+
+/// Keep a build's generator, or why there is none.
+fn store(ready: &OnceLock<Native>, failed: &OnceLock<String>, built: Result<Native, String>) {
+    match built {
+        Ok(n) => {
+            let _ = ready.set(n);
+        }
+        Err(e) => {
+            let _ = failed.set(e);
+        }
     }
 }
