@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # The test command: installs the system tools the cross-check tests use (gcc for generated C,
-# spin for Promela, berkeley-abc for AIGER, libclang-dev for building the SAT solver binding),
+# spin for Promela, berkeley-abc for AIGER),
 # then runs the whole test suite in release mode.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -8,7 +8,6 @@ need=()
 command -v gcc >/dev/null || need+=(gcc)
 command -v spin >/dev/null || need+=(spin)
 command -v berkeley-abc >/dev/null || need+=(berkeley-abc)
-ls /usr/lib/llvm-*/lib/libclang*.so* >/dev/null 2>&1 || need+=(libclang-dev)
 if [ ${#need[@]} -gt 0 ]; then
   SUDO=""
   [ "$(id -u)" -ne 0 ] && SUDO="sudo"

@@ -26,7 +26,7 @@ pub fn bmc(aig: &Aig, limits: &Limits) -> Outcome {
         }
         let b = u.lit(&mut s, bad, k);
         match s.solve(&[b]) {
-            Some(true) => return Outcome::Reached(extract(&mut u, &s, k)),
+            Some(true) => return Outcome::Reached(extract(&mut u, &mut s, k)),
             Some(false) => {
                 s.add(&[!b]);
             }
@@ -37,7 +37,7 @@ pub fn bmc(aig: &Aig, limits: &Limits) -> Outcome {
 }
 
 /// The trace of frames `0..=k` in the solver's model.
-pub(crate) fn extract(u: &mut Unroller, s: &Solver, k: usize) -> Trace {
+pub(crate) fn extract(u: &mut Unroller, s: &mut Solver, k: usize) -> Trace {
     Trace {
         init: u.latches(s, 0),
         inputs: (0..=k).map(|t| u.inputs(s, t)).collect(),

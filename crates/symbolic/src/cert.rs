@@ -8,8 +8,7 @@
 
 use crate::aig::{Aig, Lit};
 use crate::engine::Invariant;
-use crate::sat::{Solver, Start, Unroller};
-use rustsat::types::Lit as SLit;
+use crate::sat::{SLit, Solver, Start, Unroller};
 use std::fmt::Write;
 
 /// Render an invariant of `aig` in the certificate format.

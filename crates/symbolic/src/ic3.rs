@@ -18,9 +18,8 @@
 
 use crate::aig::{Aig, Lit};
 use crate::engine::{Invariant, Limits, Outcome};
-use crate::sat::{Solver, Start, Unroller};
+use crate::sat::{SLit, Solver, Start, Unroller};
 use crate::ternary::Ternary;
-use rustsat::types::Lit as SLit;
 use std::collections::{BinaryHeap, HashSet};
 
 /// A cube: latch values, sorted by latch index.
@@ -264,7 +263,7 @@ impl<'a> Ic3<'a> {
     /// The input values of the last model of `level`'s solver.
     fn model_inputs(&mut self, level: usize) -> Vec<bool> {
         let f = &mut self.solvers[level];
-        f.u.inputs(&f.s, 0)
+        f.u.inputs(&mut f.s, 0)
     }
 
     /// Shrink the state `full` (stepping with inputs `ins` into `target`, or a bad state when

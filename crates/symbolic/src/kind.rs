@@ -40,7 +40,7 @@ pub fn kind(aig: &Aig, limits: &Limits) -> Outcome {
         }
         let b = bu.lit(&mut bs, bad, k);
         match bs.solve(&[b]) {
-            Some(true) => return Outcome::Reached(extract(&mut bu, &bs, k)),
+            Some(true) => return Outcome::Reached(extract(&mut bu, &mut bs, k)),
             Some(false) => bs.add(&[!b]),
             None => return Outcome::Unknown("the SAT solver failed".into()),
         }

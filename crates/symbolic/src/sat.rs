@@ -1,19 +1,50 @@
-//! The SAT solver (CaDiCaL through `rustsat`) and the Tseitin encoding of AIG time frames.
+//! The SAT solver (CaDiCaL through `cadical-sys`, which compiles the bundled C++ source with
+//! the system's C++ compiler: no libclang, no cmake) and the Tseitin encoding of AIG time frames.
 
 use crate::aig::{Aig, Lit, Node};
-use rustsat::solvers::{Solve, SolveIncremental, SolverResult};
-use rustsat::types::{Lit as SLit, TernaryVal};
-use rustsat_cadical::CaDiCaL;
+use cadical_sys::{CaDiCal, Status};
+
+/// A solver literal: variable `v` (0-based) is CaDiCaL's variable `v + 1`, negative when the
+/// literal is negated.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub struct SLit(i32);
+
+impl SLit {
+    /// The positive literal of variable `v` (0-based).
+    pub fn positive(v: u32) -> SLit {
+        // Variable indices stay far below `i32::MAX`: every one is a node of an encoded frame.
+        SLit(i32::try_from(v + 1).unwrap_or(i32::MAX))
+    }
+
+    /// The literal's variable (0-based).
+    pub fn var(self) -> u32 {
+        self.0.unsigned_abs() - 1
+    }
+
+    fn dimacs(self) -> i32 {
+        self.0
+    }
+}
+
+impl std::ops::Not for SLit {
+    type Output = SLit;
+    fn not(self) -> SLit {
+        SLit(-self.0)
+    }
+}
 
 /// An incremental SAT solver.
 pub struct Solver {
-    s: CaDiCaL<'static, 'static>,
+    s: CaDiCal,
     vars: u32,
+    /// How many variables CaDiCaL has been told of (`resize`); its bounded variable addition
+    /// (`factor`) may only introduce variables above them.
+    declared: u32,
     t: SLit,
-    /// One more than the highest variable the solver has seen in a clause or assumption;
-    /// asking the backend for another one's value builds an error (and, with
-    /// `RUST_BACKTRACE` set, a backtrace) on a hot path.
-    known: u32,
+    /// The assumptions of the last `solve`, for `failed`.
+    assumed: Vec<SLit>,
+    /// The last answer: `val` and `failed` may only be asked in the matching state.
+    last: Option<bool>,
 }
 
 impl Default for Solver {
@@ -25,28 +56,34 @@ impl Default for Solver {
 impl Solver {
     /// A fresh solver with a constant-true variable.
     pub fn new() -> Solver {
-        Solver::with(CaDiCaL::default())
+        let mut c = CaDiCal::new();
+        // Silent whatever the environment says (`set` of "quiet" is allowed in any state).
+        c.set("quiet", 1);
+        Solver::with(c)
     }
 
     /// A solver without pre- and inprocessing, for the many small incremental queries of IC3
     /// (variable elimination then only costs model reconstruction on every call).
     pub fn plain() -> Solver {
-        let mut c = CaDiCaL::default();
-        // Fails only for an unknown configuration name; the default configuration is sound.
-        let _ = c.set_configuration(rustsat_cadical::Config::Plain);
+        let mut c = CaDiCal::new();
+        c.set("quiet", 1);
+        // Returns false only for an unknown configuration name; the default one is sound.
+        let _ = c.configure("plain");
         // "Lucky" phase checks try eight trivial assignments by full propagation before every
         // call: on thousands of small incremental queries over a large formula they cost more
-        // than the search itself. (Fails only for an unknown option name.)
-        let _ = c.set_option("lucky", 0);
+        // than the search itself. (Returns false only for an unknown option name.)
+        let _ = c.set("lucky", 0);
         Solver::with(c)
     }
 
-    fn with(c: CaDiCaL<'static, 'static>) -> Solver {
+    fn with(c: CaDiCal) -> Solver {
         let mut s = Solver {
             s: c,
             vars: 0,
+            declared: 0,
             t: SLit::positive(0),
-            known: 0,
+            assumed: Vec::new(),
+            last: None,
         };
         s.t = s.fresh();
         s.add(&[s.t]);
@@ -65,41 +102,67 @@ impl Solver {
         l
     }
 
-    /// Add a clause.
-    pub fn add(&mut self, clause: &[SLit]) {
-        self.note(clause);
-        // CaDiCaL only fails on out-of-memory; the solver then answers `unknown` later.
-        let _ = self.s.add_clause(clause.iter().copied().collect());
+    /// Declares the variables handed out since the last call.
+    fn declare(&mut self) {
+        if self.declared < self.vars {
+            self.s.resize(i32::try_from(self.vars).unwrap_or(i32::MAX));
+            self.declared = self.vars;
+        }
     }
 
-    fn note(&mut self, lits: &[SLit]) {
-        for l in lits {
-            self.known = self.known.max(l.vidx32() + 1);
+    /// Add a clause.
+    pub fn add(&mut self, clause: &[SLit]) {
+        self.declare();
+        self.last = None;
+        match clause {
+            [a] => self.s.clause1(a.dimacs()),
+            [a, b] => self.s.clause2(a.dimacs(), b.dimacs()),
+            [a, b, c] => self.s.clause3(a.dimacs(), b.dimacs(), c.dimacs()),
+            _ => {
+                for l in clause {
+                    self.s.add(l.dimacs());
+                }
+                self.s.add(0);
+            }
         }
     }
 
     /// Solve under assumptions: `Some(true)` satisfiable, `Some(false)` unsatisfiable, `None`
     /// when the solver failed.
     pub fn solve(&mut self, assumps: &[SLit]) -> Option<bool> {
-        self.note(assumps);
-        match self.s.solve_assumps(assumps) {
-            Ok(SolverResult::Sat) => Some(true),
-            Ok(SolverResult::Unsat) => Some(false),
-            _ => None,
+        self.declare();
+        self.assumed.clear();
+        self.assumed.extend_from_slice(assumps);
+        for l in assumps {
+            self.s.assume(l.dimacs());
         }
+        self.last = match self.s.solve() {
+            Status::SATISFIABLE => Some(true),
+            Status::UNSATISFIABLE => Some(false),
+            Status::UNKNOWN => None,
+        };
+        self.last
     }
 
-    /// A literal's value in the last model (false when unassigned).
-    pub fn value(&self, l: SLit) -> bool {
-        l.vidx32() < self.known && matches!(self.s.lit_val(l), Ok(TernaryVal::True))
+    /// A literal's value in the last model (false when unassigned or when the last answer was
+    /// not a model).
+    pub fn value(&mut self, l: SLit) -> bool {
+        self.last == Some(true) && l.var() < self.declared && self.s.val(l.dimacs()) > 0
     }
 
     /// The assumptions (as given) that the last unsatisfiable answer depends on.
     pub fn failed(&mut self) -> Vec<SLit> {
-        self.s
-            .core()
-            .map(|c| c.into_iter().map(|l| !l).collect())
-            .unwrap_or_default()
+        if self.last != Some(false) {
+            return Vec::new();
+        }
+        let assumed = std::mem::take(&mut self.assumed);
+        let core = assumed
+            .iter()
+            .copied()
+            .filter(|l| self.s.failed(l.dimacs()))
+            .collect();
+        self.assumed = assumed;
+        core
     }
 }
 
@@ -228,7 +291,7 @@ impl<'a> Unroller<'a> {
     }
 
     /// The values of the inputs in frame `t` of the last model (unencoded inputs: false).
-    pub fn inputs(&mut self, s: &Solver, t: usize) -> Vec<bool> {
+    pub fn inputs(&mut self, s: &mut Solver, t: usize) -> Vec<bool> {
         let ins = &self.aig.inputs;
         ins.iter()
             .map(|&v| self.slot(v, t).is_some_and(|x| s.value(x)))
@@ -237,7 +300,7 @@ impl<'a> Unroller<'a> {
 
     /// The values of the latches in frame `t` of the last model (unencoded latches: their reset
     /// value, or false).
-    pub fn latches(&mut self, s: &Solver, t: usize) -> Vec<bool> {
+    pub fn latches(&mut self, s: &mut Solver, t: usize) -> Vec<bool> {
         let ls: Vec<(u32, Option<bool>)> =
             self.aig.latches.iter().map(|l| (l.var, l.init)).collect();
         ls.into_iter()

@@ -128,7 +128,7 @@ fn pass(
         match s.solve(&[m]) {
             Some(false) => s.add(&[!m]),
             Some(true) => {
-                let ins = u.inputs(&s, 0);
+                let ins = u.inputs(&mut s, 0);
                 resimulate(&g, &f.constraints, &f.at[last], &ins, classes, &mut rng);
                 stats.refuted += 1;
                 changed = true;
