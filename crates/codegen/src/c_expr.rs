@@ -5,8 +5,8 @@
 //! status returns from the enclosing function with the node's site. Children are evaluated
 //! left to right, exactly as the interpreter does, so the first error is the same error.
 
+use statecheck_ir::{BinOp, UnOp};
 use statecheck_ir::{Node, Program, SlotId, Stmt};
-use statecheck_syntax::ast::{BinOp, UnOp};
 use std::fmt::Write;
 
 /// Emits C statements into a buffer.

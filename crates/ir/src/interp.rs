@@ -40,10 +40,16 @@ pub enum RuntimeErrorKind {
 impl RuntimeErrorKind {
     /// The built-in property this error violates.
     pub fn builtin_property(&self) -> &'static str {
+        self.builtin().name()
+    }
+
+    /// The built-in property this error violates.
+    pub fn builtin(&self) -> crate::verdict::Builtin {
+        use crate::verdict::Builtin;
         match self {
-            RuntimeErrorKind::Range { .. } | RuntimeErrorKind::Overflow => "no_range_overflow",
-            RuntimeErrorKind::DivisionByZero => "no_division_by_zero",
-            RuntimeErrorKind::BadShift => "no_bad_shift",
+            RuntimeErrorKind::Range { .. } | RuntimeErrorKind::Overflow => Builtin::RangeOverflow,
+            RuntimeErrorKind::DivisionByZero => Builtin::DivisionByZero,
+            RuntimeErrorKind::BadShift => Builtin::BadShift,
         }
     }
 

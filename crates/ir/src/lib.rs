@@ -12,8 +12,13 @@ mod interp;
 mod layout;
 pub mod lower;
 mod program;
+pub mod verdict;
+pub mod view;
 mod vm;
 
 pub use interp::{eval, Machine, Prepared, RuntimeError, RuntimeErrorKind};
 pub use lower::lower;
 pub use program::*;
+/// The operators of IR expressions and the kinds of variables, as the syntax defines them;
+/// re-exported so that the IR's consumers need not depend on the parser.
+pub use statecheck_syntax::ast::{BinOp, UnOp, VarKind};
