@@ -8,12 +8,14 @@
 //! checkers and the code generators only execute or translate the program. [`Machine`] is the
 //! reference interpreter.
 
+mod error;
 mod interp;
 mod layout;
 pub mod lower;
 mod program;
 mod vm;
 
-pub use interp::{eval, Machine, Prepared, RuntimeError, RuntimeErrorKind};
+pub use error::{RuntimeError, RuntimeErrorKind};
+pub use interp::{eval, Machine, Prepared};
 pub use lower::lower;
 pub use program::*;
