@@ -337,8 +337,7 @@ impl Eval<'_> {
             Node::Max(a, b) => self.eval(a)?.max(self.eval(b)?),
             Node::Abs(a, site) => {
                 let a = self.eval(a)?;
-                a.checked_abs()
-                    .ok_or_else(|| fault(RuntimeErrorKind::Overflow, site))?
+                ops::abs(a).map_err(|err| op_fault(err, site))?
             }
             Node::Check(a, lo, hi, site) => {
                 let v = self.eval(a)?;

@@ -3,8 +3,9 @@
 
 use super::{error_expr, type_name, ExprChecker};
 use crate::model::{Builtin, Expr, ExprKind};
+use crate::ops;
 use crate::scope::Scope;
-use crate::types::Type;
+use crate::types::{interval, Type};
 use statecheck_base::{Diagnostic, Span};
 use statecheck_syntax::ast;
 
@@ -48,15 +49,7 @@ impl<'g> ExprChecker<'g> {
             }
             let x = self.bounds(checked[0].ty);
             let (lo, hi) = match b {
-                Builtin::Abs => {
-                    if x.0 >= 0 {
-                        x
-                    } else if x.1 <= 0 {
-                        (-x.1, -x.0)
-                    } else {
-                        (0, (-x.0).max(x.1))
-                    }
-                }
+                Builtin::Abs => interval::abs(x),
                 Builtin::Min => {
                     let y = self.bounds(checked[1].ty);
                     (x.0.min(y.0), x.1.min(y.1))
@@ -75,16 +68,29 @@ impl<'g> ExprChecker<'g> {
                 .collect();
             if let Some(c) = consts {
                 let v = match b {
-                    Builtin::Abs => c[0].checked_abs(),
-                    Builtin::Min => Some(c[0].min(c[1])),
-                    Builtin::Max => Some(c[0].max(c[1])),
+                    Builtin::Abs => ops::abs(c[0]),
+                    Builtin::Min => Ok(c[0].min(c[1])),
+                    Builtin::Max => Ok(c[0].max(c[1])),
                 };
-                if let Some(v) = v {
-                    return Expr {
-                        kind: ExprKind::Const(v),
-                        ty: Type::Int { lo: v, hi: v },
-                        span,
-                    };
+                match v {
+                    Ok(v) => {
+                        return Expr {
+                            kind: ExprKind::Const(v),
+                            ty: Type::Int { lo: v, hi: v },
+                            span,
+                        }
+                    }
+                    Err(err) => {
+                        self.sink.push(
+                            Diagnostic::error(
+                                "E0104",
+                                format!("this constant expression fails: {}", err.describe()),
+                                span,
+                            )
+                            .with_label(err.describe()),
+                        );
+                        return error_expr(span);
+                    }
                 }
             }
             return Expr {
