@@ -45,3 +45,50 @@ fn division_bounds_of_an_input_reaching_i64_min_do_not_overflow() {
 ";
     assert_eq!(errors(src), []);
 }
+
+/// A chart whose state `S` has a transition into a chain of `n` junctions, the last one
+/// leading to `T`; with `fan`, every junction reaches the next by two branches.
+fn junction_chain(n: usize, fan: bool) -> String {
+    let mut s = String::from("chart J {\n  input x: int[0..9] = 0;\n  initial S;\n  state S {\n");
+    s.push_str("    on [x > 0] -> j0;\n");
+    for k in 0..n {
+        let next = if k + 1 == n {
+            "T".to_string()
+        } else {
+            format!("j{}", k + 1)
+        };
+        if fan {
+            s.push_str(&format!(
+                "    junction j{k} {{ [x > 1] -> {next}; else -> {next}; }}\n"
+            ));
+        } else {
+            s.push_str(&format!("    junction j{k} {{ [x > 0] -> {next}; }}\n"));
+        }
+    }
+    s.push_str("  }\n  state T;\n}\n");
+    s
+}
+
+#[test]
+fn long_junction_chain_is_a_diagnostic_not_a_stack_overflow() {
+    // 6,000 chained junctions once overflowed the stack. The path from `S` passes j0..j99
+    // (100 junctions, the limit) and is stopped at the reference to j100 on line 105
+    // (line 5 holds `on ... -> j0`, junction jk is on line 6 + k).
+    let errs = errors(&junction_chain(6000, false));
+    assert_eq!(errs, [("E0124", 105)]);
+    // A chain of exactly 100 junctions is accepted.
+    assert_eq!(errors(&junction_chain(100, false)), []);
+}
+
+#[test]
+fn junctions_reached_by_many_paths_do_not_expand_exponentially() {
+    // 30 junctions with two branches each to the next: 2^30 paths. The expansion budget
+    // (10,000 junctions per transition) stops it with one diagnostic instead of running out
+    // of memory.
+    let errs = errors(&junction_chain(30, true));
+    assert!(
+        !errs.is_empty() && errs.iter().all(|e| e.0 == "E0124"),
+        "{errs:?}"
+    );
+    assert_eq!(errs.len(), 1);
+}

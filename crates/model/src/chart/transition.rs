@@ -8,6 +8,30 @@ use crate::scope::Scope;
 use statecheck_base::{Diagnostic, Span};
 use statecheck_syntax::ast;
 
+/// Most junctions one path of a transition may pass through. Junctions are expanded into the
+/// transition's choice tree, which every later phase walks recursively, so a chain as long as
+/// the input allows would exhaust the stack.
+pub const MAX_JUNCTION_DEPTH: usize = 100;
+
+/// Most junction expansions in one transition: junctions reached along several paths are
+/// expanded once per path, which could otherwise grow exponentially.
+pub const MAX_JUNCTION_EXPANSIONS: usize = 10_000;
+
+/// The junctions on the path being resolved, and how many have been expanded so far.
+#[derive(Default)]
+pub(super) struct JunctionWalk {
+    stack: Vec<(StateId, String)>,
+    expanded: usize,
+    /// The limit was reported (once per transition).
+    reported: bool,
+}
+
+impl JunctionWalk {
+    fn contains(&self, key: &(StateId, String)) -> bool {
+        self.stack.contains(key)
+    }
+}
+
 pub(super) fn check_transition(
     ck: &mut ExprChecker,
     scope: &Scope,
@@ -82,7 +106,15 @@ pub(super) fn check_transition(
         .unwrap_or_default();
     let dest = match &t.target {
         None => Dest::Internal,
-        Some(target) => resolve_dest(ck, scope, chart, bodies, source, target, &mut Vec::new()),
+        Some(target) => resolve_dest(
+            ck,
+            scope,
+            chart,
+            bodies,
+            source,
+            target,
+            &mut JunctionWalk::default(),
+        ),
     };
     let priority = t.priority.map(|(p, span)| {
         if p < 1 {
@@ -146,7 +178,7 @@ pub(super) fn resolve_dest(
     bodies: &[&ast::StateBody],
     source: StateId,
     target: &ast::Target,
-    junction_stack: &mut Vec<(StateId, String)>,
+    junction_stack: &mut JunctionWalk,
 ) -> Dest {
     match target {
         ast::Target::Choice { branches, span } => Dest::Choice(check_branches(
@@ -190,7 +222,27 @@ pub(super) fn resolve_dest(
                             );
                             return Dest::Internal;
                         }
-                        junction_stack.push(key);
+                        if junction_stack.stack.len() >= MAX_JUNCTION_DEPTH
+                            || junction_stack.expanded >= MAX_JUNCTION_EXPANSIONS
+                        {
+                            if std::mem::replace(&mut junction_stack.reported, true) {
+                                return Dest::Internal;
+                            }
+                            ck.sink.push(
+                                Diagnostic::error(
+                                    "E0124",
+                                    format!(
+                                        "this transition passes through too many junctions (more than {MAX_JUNCTION_DEPTH} on one path or {MAX_JUNCTION_EXPANSIONS} in all)"
+                                    ),
+                                    p.span,
+                                )
+                                .with_label("junction limit reached here")
+                                .with_hint("merge chained junctions into one choice with more branches"),
+                            );
+                            return Dest::Internal;
+                        }
+                        junction_stack.expanded += 1;
+                        junction_stack.stack.push(key);
                         let b = check_branches(
                             ck,
                             scope,
@@ -201,7 +253,7 @@ pub(super) fn resolve_dest(
                             j.name.span,
                             junction_stack,
                         );
-                        junction_stack.pop();
+                        junction_stack.stack.pop();
                         return Dest::Choice(b);
                     }
                 }
@@ -298,7 +350,7 @@ pub(super) fn check_branches(
     source: StateId,
     branches: &[ast::Branch],
     span: Span,
-    junction_stack: &mut Vec<(StateId, String)>,
+    junction_stack: &mut JunctionWalk,
 ) -> Vec<Branch> {
     let mut out = Vec::new();
     for (i, b) in branches.iter().enumerate() {
