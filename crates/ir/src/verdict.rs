@@ -5,7 +5,7 @@
 //! This is the one place that lists the built-in properties and selects properties by name;
 //! what a property *means* is compiled by the lowering into [`Program::properties`].
 
-use crate::interp::RuntimeError;
+use crate::error::RuntimeError;
 use crate::program::{Program, PropertyKind};
 
 /// A built-in property: no run-time error of one kind in any reachable tick.

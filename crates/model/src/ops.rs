@@ -87,6 +87,12 @@ pub fn unary(op: UnOp, a: i64) -> Result<i64, OpError> {
     })
 }
 
+/// The absolute value (`abs`); `abs(i64::MIN)` overflows.
+#[inline]
+pub fn abs(a: i64) -> Result<i64, OpError> {
+    a.checked_abs().ok_or(OpError::Overflow)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
