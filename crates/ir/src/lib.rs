@@ -12,6 +12,7 @@ mod interp;
 mod layout;
 pub mod lower;
 mod program;
+pub mod temporal;
 mod vm;
 
 pub use interp::{eval, Machine, Prepared, RuntimeError, RuntimeErrorKind};
