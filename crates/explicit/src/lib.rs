@@ -24,6 +24,7 @@ mod enumerate;
 mod expand;
 mod inputs;
 mod interval;
+pub mod ltl;
 mod native;
 pub mod pack;
 pub mod props;
@@ -223,6 +224,9 @@ pub struct PropResult {
     pub error: Option<RuntimeError>,
     /// Why a counterexample is missing, if it is.
     pub note: Option<String>,
+    /// For a lasso counterexample of a temporal property: the first tick of the loop (the
+    /// state after tick `loop_start - 1` recurs after the last tick).
+    pub loop_start: Option<u64>,
 }
 
 /// Statistics of a run.
@@ -314,8 +318,37 @@ pub fn verify(
     opts: &Options,
     progress: Option<&(dyn Fn(&Progress) + Sync)>,
 ) -> Result<Report, String> {
+    let (temporal, safety) = ltl::split(program, &opts.properties);
+    let mut report = verify_safety(
+        program,
+        &Options {
+            properties: safety.clone(),
+            ..opts.clone()
+        },
+        progress,
+        safety.is_empty() && !temporal.is_empty(),
+    )?;
+    if opts.properties.is_empty() || !temporal.is_empty() {
+        let sel = (!opts.properties.is_empty()).then_some(temporal.as_slice());
+        let (results, _) = ltl::check(program, sel, opts);
+        report.results.extend(results);
+    }
+    Ok(report)
+}
+
+/// The safety part of [`verify`]: every non-temporal property selected (none when `none`).
+fn verify_safety(
+    program: &Program,
+    opts: &Options,
+    progress: Option<&(dyn Fn(&Progress) + Sync)>,
+    none: bool,
+) -> Result<Report, String> {
     let start = std::time::Instant::now();
-    let mut specs = props::select(program, &opts.properties)?;
+    let mut specs = if none {
+        Vec::new()
+    } else {
+        props::select(program, &opts.properties)?
+    };
     let mut init = statecheck_ir::Machine::new(program);
     props::mark_per_state(program, &mut specs, |c| expand::decides(&mut init, c));
     let mut space = InputSpace::new(program);
@@ -355,6 +388,7 @@ pub fn verify(
                 counterexample: None,
                 error: None,
                 note: None,
+                loop_start: None,
             })
             .collect();
         stats.limit = Some(limit);
@@ -519,6 +553,7 @@ fn run<K: Key>(
                         counterexample,
                         error: f.error,
                         note,
+                        loop_start: None,
                     }
                 }
                 None => {
@@ -541,6 +576,7 @@ fn run<K: Key>(
                         counterexample: None,
                         error: None,
                         note: None,
+                        loop_start: None,
                     }
                 }
             }

@@ -19,6 +19,12 @@ pub enum PropKind {
     Observer,
     /// A built-in property (no run-time error of a kind).
     Builtin,
+    /// `ltl NAME: formula;`
+    Ltl,
+    /// `ctl NAME: formula;`
+    Ctl,
+    /// `nonblocking NAME: expr;`
+    Nonblocking,
 }
 
 impl PropKind {
@@ -30,6 +36,9 @@ impl PropKind {
             PropKind::Respond => "respond",
             PropKind::Observer => "observer",
             PropKind::Builtin => "builtin",
+            PropKind::Ltl => "ltl",
+            PropKind::Ctl => "ctl",
+            PropKind::Nonblocking => "nonblocking",
         }
     }
 }

@@ -295,6 +295,7 @@ pub fn run_auto(p: &Program, opts: &Options) -> Result<Run> {
                             counterexample: None,
                             error: None,
                             note: None,
+                            loop_start: None,
                         },
                         Meta {
                             engine: "auto",

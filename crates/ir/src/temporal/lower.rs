@@ -21,7 +21,7 @@ pub(crate) fn lower(
                 let t = Ltl::Atom(expr(trigger));
                 let r = Ltl::Atom(expr(response));
                 let f = Ltl::Until(Box::new(Ltl::True), Box::new(r));
-                let body = Ltl::Or(Box::new(t.not()), Box::new(f));
+                let body = Ltl::Or(Box::new(t.negate()), Box::new(f));
                 let g = Ltl::Release(Box::new(Ltl::False), Box::new(body));
                 (Written::Respond, TemporalFormula::Ltl(g))
             }
@@ -64,10 +64,10 @@ fn bx(f: Ltl) -> Box<Ltl> {
 fn ltl(f: &Formula, expr: &mut dyn FnMut(&Expr) -> ExprId) -> Ltl {
     match f {
         Formula::Atom(e) => Ltl::Atom(expr(e)),
-        Formula::Not(a) => ltl(a, expr).not(),
+        Formula::Not(a) => ltl(a, expr).negate(),
         Formula::And(a, b) => Ltl::And(bx(ltl(a, expr)), bx(ltl(b, expr))),
         Formula::Or(a, b) => Ltl::Or(bx(ltl(a, expr)), bx(ltl(b, expr))),
-        Formula::Implies(a, b) => Ltl::Or(bx(ltl(a, expr).not()), bx(ltl(b, expr))),
+        Formula::Implies(a, b) => Ltl::Or(bx(ltl(a, expr).negate()), bx(ltl(b, expr))),
         Formula::Unary(op, a) => {
             let a = ltl(a, expr);
             match op {

@@ -136,7 +136,7 @@ pub struct Fairness {
 
 impl Ltl {
     /// `!self`, without double negations.
-    pub fn not(self) -> Ltl {
+    pub fn negate(self) -> Ltl {
         match self {
             Ltl::Not(a) => *a,
             Ltl::True => Ltl::False,
