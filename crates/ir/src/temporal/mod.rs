@@ -21,7 +21,10 @@
 //!   `fair N: p => q;` (if p holds infinitely often, so does q). Path quantifiers of CTL range
 //!   over fair runs.
 
+mod lasso;
 mod lower;
+
+pub use lasso::holds_on_lasso;
 
 pub(crate) use lower::lower;
 
