@@ -1,11 +1,12 @@
 //! `statecheck sim`: run a system on a scenario or random inputs and show the trace.
 
 use crate::load;
-use crate::output::{self, view::Views};
+use crate::output;
 use crate::{write_out, Exit};
 use anyhow::{bail, Result};
 use clap::Args;
 use statecheck_base::LineIndex;
+use statecheck_ir::view::TraceView as Views;
 use statecheck_sim::{random::RandomInputs, scenario, Options, ScenarioInputs, Stop};
 
 /// Arguments of `statecheck sim`.

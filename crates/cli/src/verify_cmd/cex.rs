@@ -2,9 +2,10 @@
 //! for the table (and the VCD), and checked to stop where the checker says.
 
 use crate::load::Loaded;
-use crate::output::{self, view::Views};
+use crate::output;
 use anyhow::{Context, Result};
 use statecheck_explicit::{PropKind, Report};
+use statecheck_ir::view::TraceView as Views;
 use statecheck_ir::Program;
 use statecheck_sim::{scenario, Options, ScenarioInputs, Stop, TickRecord};
 

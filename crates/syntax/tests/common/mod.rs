@@ -1,7 +1,7 @@
 //! Shared helpers for the syntax tests: a compact AST printer, a diagnostics printer and the
 //! data-file loader.
 
-#![allow(dead_code)]
+#![allow(dead_code)] // reason: each test binary that includes this module uses only some of it
 
 use statecheck_base::{Diagnostic, LineIndex};
 use statecheck_syntax::ast::*;
