@@ -78,7 +78,19 @@ pub fn run(a: SimArgs) -> Result<u8> {
                     return Err(Exit(1).into());
                 }
             };
-            statecheck_sim::run(&program, &mut ScenarioInputs::new(&sc), opts)
+            if sc.loop_start.is_some() {
+                let l = statecheck_sim::lasso::run_lasso(&program, &sc, opts);
+                if let Some(why) = &l.broken {
+                    eprintln!("error: {why} ({path})");
+                    return Err(Exit(1).into());
+                }
+                if !l.fair {
+                    eprintln!("note: the lasso is not fair (a `fair` constraint fails on its loop); temporal properties were not evaluated");
+                }
+                l.run
+            } else {
+                statecheck_sim::run(&program, &mut ScenarioInputs::new(&sc), opts)
+            }
         }
         (None, Some(n)) => statecheck_sim::run(&program, &mut RandomInputs::new(a.seed, n), opts),
         (None, None) => {
