@@ -32,6 +32,7 @@ function receive(m) {
     showDiagnostics(m.diagnostics);
   } else if (m.type === 'state') {
     applyState(m);
+    if (m.note) toast(m.note, true);
   } else if (m.type === 'scenario') {
     studio.lastScenario = m.text;
   } else if (m.type === 'error') {

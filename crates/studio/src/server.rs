@@ -289,7 +289,11 @@ pub fn handle(sess: &mut Option<Session>, text: &str) -> Value {
             }
         }
         Request::Random { id, n, seed } => match s.step_random(n.unwrap_or(1), seed.unwrap_or(0)) {
-            Ok(t) => protocol::state(s, id, None, &t),
+            Ok(t) => {
+                let mut r = protocol::state(s, id, None, &t);
+                r["note"] = json!(s.take_note());
+                r
+            }
             Err(e) => fail(id, e),
         },
         Request::Back { id, tick } => match s.back(tick) {
@@ -421,8 +425,9 @@ pub fn spawn(config: Config) -> Result<Handle, Error> {
             message: format!("cannot start the runtime: {e}"),
         })?;
     let addr = SocketAddr::new(config.bind, config.port);
-    let listener = rt
-        .block_on(tokio::net::TcpListener::bind(addr))
+    // Bound here, outside any runtime, so that `spawn` may be called from async code too.
+    let listener = std::net::TcpListener::bind(addr)
+        .and_then(|l| l.set_nonblocking(true).map(|()| l))
         .map_err(|e| Error {
             kind: ErrorKind::Bind,
             message: format!("cannot listen on {addr}: {e}"),
@@ -466,6 +471,9 @@ pub fn spawn(config: Config) -> Result<Handle, Error> {
         .name("studio-server".into())
         .spawn(move || {
             rt.block_on(async move {
+                let Ok(listener) = tokio::net::TcpListener::from_std(listener) else {
+                    return;
+                };
                 let watcher = tokio::spawn(async move {
                     let mut last = stamp(&cfg.path);
                     loop {

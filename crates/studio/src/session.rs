@@ -82,6 +82,7 @@ pub struct Session {
     stop: Option<Stop>,
     random: Option<(u64, RandomInputs)>,
     last_assume: usize,
+    note: Option<String>,
 }
 
 impl Session {
@@ -108,6 +109,7 @@ impl Session {
             stop: None,
             random: None,
             last_assume: 0,
+            note: None,
             program: loaded,
         }
     }
@@ -120,6 +122,12 @@ impl Session {
     /// The loaded model.
     pub fn loaded(&self) -> &Arc<crate::load::Loaded> {
         &self.program
+    }
+
+    /// A remark about the last request that still succeeded (for instance a random batch
+    /// cut short); taken once.
+    pub fn take_note(&mut self) -> Option<String> {
+        self.note.take()
     }
 
     /// Ticks run so far.
@@ -207,12 +215,16 @@ impl Session {
             };
             use statecheck_sim::InputSource;
             if let Err(a) = gen.next(tick, &m, &mut inputs) {
+                let message = format!(
+                    "no random inputs satisfying `assume` #{} of the system were found for tick {tick} ({} draws); {} random ticks ran",
+                    a + 1,
+                    statecheck_sim::random::MAX_TRIES,
+                    out.len()
+                );
                 if out.is_empty() {
-                    return Err(err(
-                        ErrorKind::Assume,
-                        format!("no random inputs satisfy `assume` #{} of the system", a + 1),
-                    ));
+                    return Err(err(ErrorKind::Assume, message));
                 }
+                self.note = Some(message);
                 break;
             }
             for (i, inp) in p.inputs.iter().enumerate() {
