@@ -316,10 +316,15 @@ function setCursor(t) {
 function defaultSelection() {
   const m = studio.model;
   const sel = [];
-  const firstInputs = m.inputs.filter(i => !i.event).slice(0, 4).map(i => i.name);
-  for (const v of m.vars) if (firstInputs.includes(v.name)) sel.push(v);
-  for (const v of m.vars) if (v.kind === 'output' && sel.length < 12 && !sel.includes(v)) sel.push(v);
-  for (const e of m.events) if (sel.length < 14 && e.free) sel.push(Object.assign({isEvent: true}, e));
+  // The free inputs, then the outputs of the instances with the most states (the plant and
+  // the controller rather than glue charts), a dozen rows in all.
+  for (const v of m.vars) if (v.free && sel.length < 5) sel.push(v);
+  for (const e of m.events) if (e.free && sel.length < 7) sel.push(Object.assign({isEvent: true}, e));
+  const size = k => m.charts[m.instances[k].chart].states.length;
+  const order = m.instances.map((_, k) => k).filter(k => !m.instances[k].observer).sort((a, b) => size(b) - size(a));
+  for (const k of order) {
+    for (const v of m.vars) if (v.instance === k && v.kind === 'output' && sel.length < 13 && !sel.includes(v)) sel.push(v);
+  }
   studio.selection = sel;
   const pk = $('#picker');
   pk.innerHTML = m.vars.map(v => `<label><input type="checkbox" data-sig="${v.name}"${sel.includes(v) ? ' checked' : ''}> ${v.name}</label>`).join('') +

@@ -5,8 +5,29 @@
 'use strict';
 
 const Chart = (() => {
-  const NAME_W = 7.4, MONO_W = 6.35, LINE_H = 13, LABEL_MAX = 46;
+  const NAME_W = 7.6, MONO_W = 6.6, LINE_H = 13, LABEL_MAX = 46;
   const elk = new ELK();
+  // Exclusive (OR) levels: layered, top-down, transitions routed orthogonally across levels.
+  const LAYERED = {
+    'elk.algorithm': 'layered',
+    'elk.direction': 'DOWN',
+    'elk.hierarchyHandling': 'INCLUDE_CHILDREN',
+    'elk.layered.spacing.nodeNodeBetweenLayers': '34',
+    'elk.spacing.nodeNode': '26',
+    'elk.spacing.edgeLabel': '4',
+    'elk.spacing.edgeNode': '14',
+    'elk.layered.spacing.edgeNodeBetweenLayers': '12',
+    'elk.edgeLabels.inline': 'false',
+    'elk.layered.thoroughness': '4',
+    'elk.edgeRouting': 'ORTHOGONAL',
+  };
+  // Parallel (AND) levels: the regions packed in rows, as Stateflow tiles parallel states.
+  const PACK = {
+    'elk.algorithm': 'rectpacking',
+    'elk.aspectRatio': '1.9',
+    'elk.spacing.nodeNode': '14',
+    'elk.rectpacking.trybox': 'false',
+  };
 
   function esc(s) {
     return String(s).replace(/&/g, '&amp;').replace(/</g, '&lt;').replace(/>/g, '&gt;').replace(/"/g, '&quot;');
@@ -49,16 +70,17 @@ const Chart = (() => {
       const id = 's' + sid;
       const lines = textLines(sid);
       info[id] = {kind: s.region ? 'region' : (s.kind === 'simple' ? 'state' : 'composite'), sid, lines, order};
-      const nameW = s.name.length * NAME_W + (order ? 30 : 22);
+      // Room for the name, the execution order and the coverage badge.
+      const nameW = s.name.length * NAME_W + (order ? 30 : 22) + 36;
       const linesW = Math.max(0, ...lines.map(l => l.length * MONO_W)) + 18;
       if (s.kind === 'simple') {
         return {id, width: Math.max(86, nameW, linesW), height: 30 + lines.length * LINE_H};
       }
-      const n = {id, children: [], layoutOptions: {
+      const n = {id, children: [], edges: [], layoutOptions: Object.assign({
         'elk.padding': `[top=${26 + lines.length * LINE_H},left=14,bottom=14,right=14]`,
         'elk.nodeSize.constraints': 'MINIMUM_SIZE',
         'elk.nodeSize.minimum': `(${Math.max(nameW, linesW)},40)`,
-      }};
+      }, s.kind === 'and' ? PACK : LAYERED)};
       fill(n, sid);
       return n;
     }
@@ -82,30 +104,20 @@ const Chart = (() => {
         n.children.push({id: hid, width: 20, height: 20});
       }
     }
-    const root = {id: 'root', children: [], edges, layoutOptions: {
-      'elk.algorithm': 'layered',
-      'elk.direction': 'DOWN',
-      'elk.hierarchyHandling': 'INCLUDE_CHILDREN',
+    const rootKind = S[0].kind;
+    const root = {id: 'root', children: [], edges: [], layoutOptions: Object.assign({
       'elk.json.shapeCoords': 'ROOT',
       'elk.json.edgeCoords': 'ROOT',
-      'elk.layered.spacing.nodeNodeBetweenLayers': '34',
-      'elk.spacing.nodeNode': '26',
-      'elk.spacing.edgeLabel': '4',
-      'elk.spacing.edgeNode': '14',
-      'elk.layered.spacing.edgeNodeBetweenLayers': '12',
-      'elk.edgeLabels.inline': 'false',
-      'elk.layered.edgeLabels.sideSelection': 'SMART_DOWN',
-      'elk.layered.nodePlacement.strategy': 'NETWORK_SIMPLEX',
-      'elk.edgeRouting': 'ORTHOGONAL',
       'elk.padding': '[top=12,left=12,bottom=12,right=12]',
-    }};
+    }, rootKind === 'and' ? PACK : LAYERED)};
     fill(root, 0);
     // Junction nodes live in the source state's parent.
     const parentNode = {};
     (function index(n) { for (const c of n.children || []) { parentNode[c.id] = n; index(c); } })(root);
     const label = (text, id) => {
       const lines = wrap(text, LABEL_MAX);
-      return [{id, text: lines.join('\n'), width: Math.max(...lines.map(l => l.length)) * MONO_W + 4, height: lines.length * LINE_H}];
+      // Room for the coverage badge after the text.
+      return [{id, text: lines.join('\n'), width: Math.max(...lines.map(l => l.length)) * MONO_W + 34, height: lines.length * LINE_H}];
     };
     let jn = 0;
     function branches(t, from, list, counter, container) {
@@ -144,6 +156,15 @@ const Chart = (() => {
         edges.push(e);
         branches(t, j, t.dest.branches, {k: 0}, container);
       }
+    }
+    // Each edge goes to the innermost compound holding both ends (ELK lays out a level with
+    // its own edges; across levels only where the hierarchy is laid out as one).
+    (function index(n) { for (const c of n.children || []) { parentNode[c.id] = n; index(c); } })(root);
+    const chain = id => { const out = []; let n = parentNode[id]; while (n) { out.push(n); n = parentNode[n.id]; } return out; };
+    for (const e of edges) {
+      const a = chain(e.sources[0]), b = new Set(chain(e.targets[0]));
+      const lca = a.find(n => b.has(n)) || root;
+      lca.edges.push(e);
     }
     return {root, info, edgeInfo};
   }
@@ -190,14 +211,16 @@ const Chart = (() => {
         parts.push(`<g class="badge" data-badge-sid="${inf.sid}" transform="translate(${x + w - (inf.order ? 40 : 10)},${y + 4})"></g></g>`);
       }
     }
-    for (const e of out.edges || []) {
+    const allEdges = [];
+    (function walk(n) { for (const e of n.edges || []) allEdges.push(e); for (const c of n.children || []) walk(c); })(out);
+    for (const e of allEdges) {
       const ei = g.edgeInfo[e.id] || {};
       const attrs = ei.kind === 'tr' ? ` data-t="${ei.t}"` : ei.kind === 'branch' ? ` data-t="${ei.t}" data-b="${ei.b}"` : '';
       parts.push(`<g class="tr ${ei.kind || ''}"${attrs}><path d="${pathOf(e.sections)}" marker-end="url(#arrow)"/>`);
       for (const l of e.labels || []) {
         const lines = l.text.split('\n');
         lines.forEach((t, k) => parts.push(`<text x="${(l.x + 2).toFixed(1)}" y="${(l.y + 10 + k * LINE_H).toFixed(1)}">${esc(t)}</text>`));
-        parts.push(`<g class="badge" data-badge-t="${ei.t}" data-badge-b="${ei.b === undefined ? '' : ei.b}" transform="translate(${(l.x + l.width + 4).toFixed(1)},${(l.y).toFixed(1)})"></g>`);
+        parts.push(`<g class="badge" data-badge-t="${ei.t}" data-badge-b="${ei.b === undefined ? '' : ei.b}" transform="translate(${(l.x + l.width - 28).toFixed(1)},${(l.y).toFixed(1)})"></g>`);
       }
       parts.push('</g>');
     }
