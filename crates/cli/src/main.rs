@@ -9,6 +9,7 @@ mod export_cmd;
 mod gen_cmd;
 mod load;
 mod output;
+mod serve_cmd;
 mod sim_cmd;
 mod synth_cmd;
 mod verify_cmd;
@@ -51,6 +52,8 @@ enum Command {
     Export(export_cmd::ExportCommand),
     /// Synthesize a maximally permissive, controllable, nonblocking supervisor.
     Synth(synth_cmd::SynthArgs),
+    /// Serve the validation studio: a local web page that animates the charts.
+    Serve(serve_cmd::ServeArgs),
     /// Draw a system's charts as Graphviz DOT, optionally with coverage counts.
     Dot {
         /// The `.sc` model file.
@@ -123,6 +126,7 @@ fn run(cli: Cli) -> Result<u8> {
         Command::Gen(args) => gen_cmd::run(args),
         Command::Export(c) => export_cmd::run(c),
         Command::Synth(args) => synth_cmd::run(args),
+        Command::Serve(args) => serve_cmd::run(args),
         Command::Dot {
             model,
             system,

@@ -9,5 +9,7 @@ pub mod random;
 pub mod run;
 pub mod scenario;
 
-pub use run::{run, InputSource, Options, Run, ScenarioInputs, Stop, TickRecord};
+pub use run::{
+    run, tick_once, unreached, InputSource, Options, Run, ScenarioInputs, Stop, TickRecord,
+};
 pub use scenario::{Scenario, ScenarioError};
