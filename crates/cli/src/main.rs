@@ -6,6 +6,7 @@
 
 mod diag;
 mod export_cmd;
+mod fmt_cmd;
 mod gen_cmd;
 mod load;
 mod output;
@@ -51,6 +52,8 @@ enum Command {
     Export(export_cmd::ExportCommand),
     /// Synthesize a maximally permissive, controllable, nonblocking supervisor.
     Synth(synth_cmd::SynthArgs),
+    /// Rewrite model files in the canonical layout (`--check`: only report).
+    Fmt(fmt_cmd::FmtArgs),
     /// Draw a system's charts as Graphviz DOT, optionally with coverage counts.
     Dot {
         /// The `.sc` model file.
@@ -123,6 +126,7 @@ fn run(cli: Cli) -> Result<u8> {
         Command::Gen(args) => gen_cmd::run(args),
         Command::Export(c) => export_cmd::run(c),
         Command::Synth(args) => synth_cmd::run(args),
+        Command::Fmt(args) => fmt_cmd::run(args),
         Command::Dot {
             model,
             system,
