@@ -54,6 +54,8 @@ enum Command {
     Synth(synth_cmd::SynthArgs),
     /// Rewrite model files in the canonical layout (`--check`: only report).
     Fmt(fmt_cmd::FmtArgs),
+    /// Run the language server on standard input and output (for editors; docs/tools.md).
+    Lsp,
     /// Draw a system's charts as Graphviz DOT, optionally with coverage counts.
     Dot {
         /// The `.sc` model file.
@@ -127,6 +129,10 @@ fn run(cli: Cli) -> Result<u8> {
         Command::Export(c) => export_cmd::run(c),
         Command::Synth(args) => synth_cmd::run(args),
         Command::Fmt(args) => fmt_cmd::run(args),
+        Command::Lsp => {
+            statecheck_lsp::serve_stdio()?;
+            Ok(0)
+        }
         Command::Dot {
             model,
             system,
