@@ -5,6 +5,7 @@
 //! (0 ok, 1 model or run-time error, 2 usage error, 4 a property was violated in a run).
 
 mod diag;
+mod diag_json;
 mod export_cmd;
 mod fmt_cmd;
 mod gen_cmd;
@@ -24,6 +25,19 @@ use std::process::ExitCode;
 struct Cli {
     #[command(subcommand)]
     command: Command,
+    /// How diagnostics are printed on standard error: `human` (rendered, the default) or
+    /// `json` (one JSON object per line; docs/tools.md).
+    #[arg(long, global = true, value_enum, default_value_t = MessageFormat::Human)]
+    message_format: MessageFormat,
+}
+
+/// The values of `--message-format`.
+#[derive(Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+enum MessageFormat {
+    /// Rendered for people.
+    Human,
+    /// One JSON object per diagnostic and line.
+    Json,
 }
 
 #[derive(Subcommand)]
@@ -102,6 +116,7 @@ fn main() -> ExitCode {
 }
 
 fn run(cli: Cli) -> Result<u8> {
+    diag_json::set_json(cli.message_format == MessageFormat::Json);
     match cli.command {
         Command::Check { model } => {
             let loaded = load::load(&model, true)?;
