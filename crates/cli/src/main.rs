@@ -5,7 +5,9 @@
 //! (0 ok, 1 model or run-time error, 2 usage error, 4 a property was violated in a run).
 
 mod diag;
+mod diag_json;
 mod export_cmd;
+mod fmt_cmd;
 mod gen_cmd;
 mod load;
 mod output;
@@ -24,6 +26,19 @@ use std::process::ExitCode;
 struct Cli {
     #[command(subcommand)]
     command: Command,
+    /// How diagnostics are printed on standard error: `human` (rendered, the default) or
+    /// `json` (one JSON object per line; docs/tools.md).
+    #[arg(long, global = true, value_enum, default_value_t = MessageFormat::Human)]
+    message_format: MessageFormat,
+}
+
+/// The values of `--message-format`.
+#[derive(Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+enum MessageFormat {
+    /// Rendered for people.
+    Human,
+    /// One JSON object per diagnostic and line.
+    Json,
 }
 
 #[derive(Subcommand)]
@@ -54,6 +69,10 @@ enum Command {
     Synth(synth_cmd::SynthArgs),
     /// Serve the validation studio: a local web page that animates the charts.
     Serve(serve_cmd::ServeArgs),
+    /// Rewrite model files in the canonical layout (`--check`: only report).
+    Fmt(fmt_cmd::FmtArgs),
+    /// Run the language server on standard input and output (for editors; docs/tools.md).
+    Lsp,
     /// Draw a system's charts as Graphviz DOT, optionally with coverage counts.
     Dot {
         /// The `.sc` model file.
@@ -100,6 +119,7 @@ fn main() -> ExitCode {
 }
 
 fn run(cli: Cli) -> Result<u8> {
+    diag_json::set_json(cli.message_format == MessageFormat::Json);
     match cli.command {
         Command::Check { model } => {
             let loaded = load::load(&model, true)?;
@@ -127,6 +147,11 @@ fn run(cli: Cli) -> Result<u8> {
         Command::Export(c) => export_cmd::run(c),
         Command::Synth(args) => synth_cmd::run(args),
         Command::Serve(args) => serve_cmd::run(args),
+        Command::Fmt(args) => fmt_cmd::run(args),
+        Command::Lsp => {
+            statecheck_lsp::serve_stdio()?;
+            Ok(0)
+        }
         Command::Dot {
             model,
             system,
