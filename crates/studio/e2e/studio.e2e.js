@@ -187,7 +187,9 @@ async function fam5(browser) {
   const url = await serve(model);
   const page = await browser.newPage({viewport: {width: 1920, height: 1200}, acceptDownloads: true});
   const ms = await open(page, url);
-  console.log(`page load (fam_system5.sc): ${ms} ms (layout ${Math.round(await page.evaluate(() => window.studio.layoutMs))} ms)`);
+  console.log(`page load (fam_system5.sc), first visit: ${ms} ms (layout ${Math.round(await page.evaluate(() => window.studio.layoutMs))} ms)`);
+  const again = await open(page, url);
+  console.log(`page load (fam_system5.sc), reload with the layout cached: ${again} ms`);
   await page.check('#random');
   await page.fill('#seed', '5');
   await page.fill('#n', '80');
