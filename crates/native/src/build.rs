@@ -1,8 +1,11 @@
 //! Compiling a generated successor generator into a shared library, with a cache.
 //!
 //! The compiler is `$CC`, else `cc`. Libraries are cached in `$STATECHECK_CACHE_DIR`, else
-//! `$XDG_CACHE_HOME/statecheck/native`, else `~/.cache/statecheck/native` (the temp dir only
-//! without a home), under the hash of the source and the compiler command; the
+//! `$XDG_CACHE_HOME/statecheck/native`, else `~/.cache/statecheck/native`, under the hash of
+//! the source and the compiler command. A library is loaded and run from there, so the
+//! directory must be private: it is created with mode 0700, one that others can write to is
+//! refused, and without any of the three variables there is no cache and no native code (the
+//! engine runs the interpreter and says why; never the shared temp directory). The
 //! source is stored beside its library and compared in full before a cached library is used,
 //! so a hash collision costs a compilation, never a wrong library. A library is written under
 //! a temporary name and renamed into place, so concurrent runs never load half a file.
@@ -31,8 +34,8 @@ fn compiler() -> String {
 }
 
 /// The cache directory: the user's own (a library is loaded and run from here, so never a
-/// directory that others can write to by default).
-fn cache_dir() -> PathBuf {
+/// directory that others can write to).
+fn cache_dir() -> Result<PathBuf, String> {
     let var = |v: &str| {
         std::env::var_os(v)
             .filter(|x| !x.is_empty())
@@ -41,7 +44,33 @@ fn cache_dir() -> PathBuf {
     var("STATECHECK_CACHE_DIR")
         .or_else(|| var("XDG_CACHE_HOME").map(|d| d.join("statecheck/native")))
         .or_else(|| var("HOME").map(|d| d.join(".cache/statecheck/native")))
-        .unwrap_or_else(|| std::env::temp_dir().join("statecheck-native"))
+        .ok_or_else(|| {
+            "no private cache directory for native code (set STATECHECK_CACHE_DIR, XDG_CACHE_HOME or HOME)".to_string()
+        })
+}
+
+/// Create `dir` (mode 0700 where it is new) and check that only its owner can write to it.
+fn private_dir(dir: &Path) -> Result<(), String> {
+    let mut builder = std::fs::DirBuilder::new();
+    builder.recursive(true);
+    #[cfg(unix)]
+    std::os::unix::fs::DirBuilderExt::mode(&mut builder, 0o700);
+    builder
+        .create(dir)
+        .map_err(|e| format!("cannot create the cache directory {}: {e}", dir.display()))?;
+    #[cfg(unix)]
+    {
+        use std::os::unix::fs::PermissionsExt;
+        let meta = std::fs::symlink_metadata(dir)
+            .map_err(|e| format!("cannot read the cache directory {}: {e}", dir.display()))?;
+        if !meta.is_dir() || meta.permissions().mode() & 0o022 != 0 {
+            return Err(format!(
+                "the cache directory {} is not a private directory (others can write to it); no native code is loaded from it",
+                dir.display()
+            ));
+        }
+    }
+    Ok(())
 }
 
 /// The path of a shared library built from `source`, compiling it unless the cache has it.
@@ -52,9 +81,8 @@ pub(crate) fn library(source: &str) -> Result<PathBuf, String> {
     cc.hash(&mut h);
     FLAGS.hash(&mut h);
     let stem = format!("sc_{:016x}", h.finish());
-    let dir = cache_dir();
-    std::fs::create_dir_all(&dir)
-        .map_err(|e| format!("cannot create the cache directory {}: {e}", dir.display()))?;
+    let dir = cache_dir()?;
+    private_dir(&dir)?;
     let c_path = dir.join(format!("{stem}.c"));
     let lib_path = dir.join(format!("{stem}.{}", std::env::consts::DLL_EXTENSION));
     let cached =

@@ -3,10 +3,10 @@
 //! unpacks one packed state, runs one tick per listed input vector and packs each successor
 //! with exactly the layout of [`Packer`].
 
-use crate::pack::Packer;
 use statecheck_codegen::c::{c_type, generate_counting_covers};
 use statecheck_codegen::common::slot_fields;
 use statecheck_codegen::Source;
+use statecheck_explicit::pack::Packer;
 use statecheck_ir::Program;
 use std::fmt::Write;
 

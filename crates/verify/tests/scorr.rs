@@ -5,6 +5,7 @@
 //! `Reduction::lift`) with the explicit engine's shortest length; every invariant that comes
 //! back passes the certificate check on the original circuit.
 
+#[path = "../../symbolic/tests/common_models.rs"]
 mod common_models;
 
 use statecheck_explicit::{Options, Verdict};

@@ -2,6 +2,8 @@
 //! and gives the interpreter's answer. Its own test binary: it sets process-wide variables.
 
 use statecheck_explicit::{verify, Backend, Options};
+use statecheck_native::CCompiler;
+use std::sync::Arc;
 
 #[test]
 fn no_compiler_means_the_interpreter_with_a_note() {
@@ -17,6 +19,7 @@ fn no_compiler_means_the_interpreter_with_a_note() {
         &p,
         &Options {
             backend: Backend::Native,
+            compiler: Some(Arc::new(CCompiler)),
             ..Options::default()
         },
         None,

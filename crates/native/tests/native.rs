@@ -6,7 +6,9 @@
 //! Needs a C compiler (`cc`, or `$CC`), as the C code generation tests do.
 
 use statecheck_explicit::{verify, Backend, Options, Report};
+use statecheck_native::CCompiler;
 use std::path::Path;
+use std::sync::Arc;
 
 /// Every `.sc` file the comparison runs on, relative to the workspace root.
 const DIRS: [&str; 4] = [
@@ -43,6 +45,7 @@ fn run(p: &statecheck_ir::Program, backend: Backend) -> Report {
             depth: Some(40),
             max_states: Some(30_000),
             backend,
+            compiler: Some(Arc::new(CCompiler)),
             // The native code alone: no state is also expanded by the interpreter.
             native_sample: 0,
             // Wider input spaces are compared by the benchmark and the FAM tests' runs.
@@ -152,6 +155,7 @@ fn run_unbounded(p: &statecheck_ir::Program, backend: Backend) -> Report {
         &Options {
             threads: 2,
             backend,
+            compiler: Some(Arc::new(CCompiler)),
             ..Options::default()
         },
         None,
@@ -174,6 +178,7 @@ fn a_property_reading_inputs_is_checked_on_native_successors() {
         &p,
         &Options {
             backend: Backend::Native,
+            compiler: Some(Arc::new(CCompiler)),
             native_sample: 0,
             ..Options::default()
         },
