@@ -184,7 +184,7 @@ function buildPresets() {
   sel.add(new Option('all inputs', 'all'));
   const m = studio.model;
   const names = m.inputs.map(i => i.name);
-  const fault = n => /(stall|fault|powerloss|savefails|cofnow|fail)/i.test(n.split('.').pop());
+  const fault = n => /(stall|fault|powerloss|savefails|cofnow|fail|corrupt)/i.test(n.split('.').pop());
   if (names.some(n => /\.runMode$/.test(n))) sel.add(new Option('FAM mode: you are the master', 'fam'));
   if (names.some(n => /ccm/i.test(n))) sel.add(new Option('closed loop: CCM and faults', 'closed'));
   sel.onchange = () => applyPreset(sel.value, fault);
@@ -213,8 +213,19 @@ async function buildCharts() {
   box.innerHTML = '';
   const m = studio.model;
   const svgText = {};
+  // Each chart is laid out once (instances share it) and the drawing is kept in the
+  // browser's storage, keyed by the chart's description, so a reload draws at once.
   for (const inst of m.instances) {
-    if (!(inst.chart in svgText)) svgText[inst.chart] = await Chart.layout(m.charts[inst.chart]);
+    if (inst.chart in svgText) continue;
+    const desc = JSON.stringify(m.charts[inst.chart]);
+    const key = 'statecheck-layout-v1:' + hash(desc);
+    let svg = null;
+    try { svg = localStorage.getItem(key); } catch (e) { svg = null; }
+    if (!svg) {
+      svg = await Chart.layout(m.charts[inst.chart]);
+      try { localStorage.setItem(key, svg); } catch (e) { /* storage full or disabled */ }
+    }
+    svgText[inst.chart] = svg;
   }
   studio.svgs = m.instances.map((inst, k) => {
     const card = document.createElement('div');
@@ -224,6 +235,31 @@ async function buildCharts() {
     box.appendChild(card);
     return card.querySelector('svg');
   });
+  // Many instances side by side: start smaller (master + 5 FAMs has 19 instances).
+  $('#zoom').value = m.instances.length > 8 ? '0.5' : '1';
+  zoom();
+}
+
+// A 53-bit string hash (cyrb53), for layout cache keys.
+function hash(str) {
+  let h1 = 0xdeadbeef, h2 = 0x41c6ce57;
+  for (let i = 0; i < str.length; i++) {
+    const ch = str.charCodeAt(i);
+    h1 = Math.imul(h1 ^ ch, 2654435761);
+    h2 = Math.imul(h2 ^ ch, 1597334677);
+  }
+  h1 = Math.imul(h1 ^ (h1 >>> 16), 2246822507) ^ Math.imul(h2 ^ (h2 >>> 13), 3266489909);
+  h2 = Math.imul(h2 ^ (h2 >>> 16), 2246822507) ^ Math.imul(h1 ^ (h1 >>> 13), 3266489909);
+  return (4294967296 * (2097151 & h2) + (h1 >>> 0)).toString(36) + ':' + str.length;
+}
+
+function zoom() {
+  const z = +$('#zoom').value || 1;
+  for (const svg of studio.svgs) {
+    const w = +svg.getAttribute('width'), h = +svg.getAttribute('height');
+    svg.style.width = `${w * z}px`;
+    svg.style.height = `${h * z}px`;
+  }
 }
 
 // ---------------------------------------------------------------- state and rendering
@@ -401,6 +437,7 @@ function wire() {
   $('#forward').onclick = () => send({op: 'forward', n: 1});
   $('#reset').onclick = () => { setRunning(false); studio.lastLoaded = null; send({op: 'reset'}); };
   $('#cov').onchange = render;
+  $('#zoom').onchange = zoom;
   $('#save').onclick = async () => {
     const r = await send({op: 'save'});
     download(`${studio.model.system}.scn`, r.text);

@@ -118,14 +118,20 @@ async function famClosedLoop(browser) {
   await page.fill('.ctl[data-input="ctrl.ccm"] input[type=number]', '1000');
   await page.dispatchEvent('.ctl[data-input="ctrl.ccm"] input[type=number]', 'change');
   await page.waitForFunction(() => window.studio.held['ctrl.ccm'] === 1000);
-  await stepN(page, 40);
-  // Inject a stall for one tick.
+  // The FAM runs from tick 13 on (its calibration move, by sim of `ctrl.ccm = 1000`): inject
+  // a stall for one tick while it runs, at tick 17.
+  await page.check('#cov');
+  await stepN(page, 17);
   await page.click('.ctl[data-input="fam.stallNow"] button.pulse');
   await page.click('#step');
-  await waitTicks(page, 41);
-  const rec = await page.evaluate(() => window.studio.records[40]);
-  assert.deepStrictEqual(rec.vars['fam.stallNow'], true, 'the pulse reached tick 40');
-  await stepN(page, 10);
+  await waitTicks(page, 18);
+  const rec = await page.evaluate(() => window.studio.records[17]);
+  assert.deepStrictEqual(rec.vars['fam.stallNow'], true, 'the pulse reached tick 17');
+  assert.ok(rec.active.fam.includes('stallHandler.stallMode'), 'the FAM stalled: ' + rec.active.fam);
+  assert.deepStrictEqual(await highlighted(page), sortActive(rec.active));
+  await stepN(page, 2);
+  await page.screenshot({path: path.join(SHOTS, 'fam_closed_loop.png')});
+  await stepN(page, 31);
   const ref = await checkAgainstSim(page, model, null, 'fam.scn');
   // Step back: the chart shows tick 49 as sim has it; forward again: tick 50.
   await page.click('#back');
@@ -134,10 +140,8 @@ async function famClosedLoop(browser) {
   await page.click('#forward');
   await waitTicks(page, 51);
   assert.deepStrictEqual(await highlighted(page), sortActive(ref.ticks[50].active), 'after forward');
-  await page.check('#cov');
   await stepN(page, 60);
   await checkAgainstSim(page, model, null, 'fam2.scn');
-  await page.screenshot({path: path.join(SHOTS, 'fam_closed_loop.png')});
   await page.click('.tab[data-tab="msc"]');
   await page.screenshot({path: path.join(SHOTS, 'sequence.png')});
   const msgs = await page.$$eval('#msc g.msg', g => g.length);
@@ -187,7 +191,9 @@ async function fam5(browser) {
   const url = await serve(model);
   const page = await browser.newPage({viewport: {width: 1920, height: 1200}, acceptDownloads: true});
   const ms = await open(page, url);
-  console.log(`page load (fam_system5.sc): ${ms} ms (layout ${Math.round(await page.evaluate(() => window.studio.layoutMs))} ms)`);
+  console.log(`page load (fam_system5.sc), first visit: ${ms} ms (layout ${Math.round(await page.evaluate(() => window.studio.layoutMs))} ms)`);
+  const again = await open(page, url);
+  console.log(`page load (fam_system5.sc), reload with the layout cached: ${again} ms`);
   await page.check('#random');
   await page.fill('#seed', '5');
   await page.fill('#n', '80');
