@@ -60,3 +60,12 @@ system NoCompassion {
   assume !c.reset;
   ltl past_one: G(c.n == 1 => F c.n == 2);  // violated: inc once, then nothing
 }
+
+// `assume c.n < 2` (on the state before each tick) allows no input once n = 2: a deadlock,
+// first reached by tick 0, inc, inc (3 ticks). Infinite runs never reach n = 2.
+system Deadlock {
+  instance c: C;
+  assume c.n < 2;
+  ltl never2: G c.n < 2;     // proved: only finite runs reach n = 2
+  ltl reaches2: F c.n == 2;  // violated: n = 0 forever
+}

@@ -92,8 +92,39 @@ fn free_counter() {
             ("ax_one", "violated"),
             ("eg_low", "proved"),
             ("zero", "proved"),
+            ("deadlock_free", "proved"),
         ],
     );
+}
+
+#[test]
+fn deadlock() {
+    check(
+        "Deadlock",
+        &[
+            ("never2", "proved"),
+            ("reaches2", "violated"),
+            ("deadlock_free", "violated"),
+        ],
+    );
+    // The shortest scenario into the deadlock: tick 0, inc, inc.
+    let out = Command::new(BIN)
+        .args([
+            "verify",
+            &model(),
+            "--system",
+            "Deadlock",
+            "--json",
+            "--property",
+            "deadlock_free",
+        ])
+        .output()
+        .expect("statecheck runs");
+    let v: Value = serde_json::from_slice(&out.stdout).expect("JSON");
+    let r = &v["results"][0];
+    assert_eq!(r["property"], "deadlock_free");
+    assert_eq!(r["depth"], 3);
+    assert_eq!(out.status.code(), Some(1));
 }
 
 #[test]

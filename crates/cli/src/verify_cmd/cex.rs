@@ -59,6 +59,8 @@ pub fn process(
             // A CTL counterexample is a path to an initial position that fails the formula;
             // the simulator does not evaluate CTL.
             (Stop::Completed, PropKind::Ctl | PropKind::Nonblocking) => None,
+            // A deadlock: the scenario ends in the state where no input is allowed.
+            (Stop::Completed, PropKind::Builtin) if r.name == "deadlock_free" => None,
             (_, PropKind::Reachable) => {
                 let at = run
                     .reached

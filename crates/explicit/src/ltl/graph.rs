@@ -54,6 +54,8 @@ pub struct Kripke {
     edge_start: Vec<u32>,
     /// Edges `(target node, input position)`, grouped by source state.
     edges: Vec<(u32, u32)>,
+    /// Each state's BFS parent and the input position that first reached it (state 0: none).
+    parent: Vec<(u32, u32)>,
     /// States where the `assume`s allow no input vector (deadlocks), in discovery order.
     pub deadlocks: Vec<u32>,
     /// Transitions that stopped with a run-time error (no successor).
@@ -100,12 +102,28 @@ impl Kripke {
         &self.states[s as usize * w..s as usize * w + w]
     }
 
+    /// Input positions of a shortest scenario from the initial state to state `s`.
+    pub fn path_to(&self, s: u32) -> Vec<u32> {
+        let mut out = Vec::new();
+        let mut cur = s;
+        while cur != 0 {
+            let Some(&(p, inp)) = self.parent.get(cur as usize) else {
+                break;
+            };
+            out.push(inp);
+            cur = p;
+        }
+        out.reverse();
+        out
+    }
+
     /// Bytes held.
     pub fn bytes(&self) -> u64 {
         (self.states.len() * 8
             + self.node_state.len() * 12
             + self.edge_start.len() * 4
-            + self.edges.len() * 8) as u64
+            + self.edges.len() * 8
+            + self.parent.len() * 8) as u64
     }
 }
 
@@ -131,6 +149,7 @@ pub fn build(program: &Program, atoms: &[ExprId], limits: GraphLimits) -> Result
     let mut g = Kripke {
         words,
         edge_start: vec![0],
+        parent: vec![(0, 0)],
         ..Kripke::default()
     };
     let mut index: HashMap<Box<[u64]>, u32> = HashMap::new();
@@ -209,6 +228,7 @@ pub fn build(program: &Program, atoms: &[ExprId], limits: GraphLimits) -> Result
                 .or_insert(next as u32);
             if t as usize == next {
                 g.states.extend_from_slice(&scratch);
+                g.parent.push((s, idx as u32));
             }
             let nn = g.node_state.len() as u32;
             let node = *node_index.entry((t, letter)).or_insert(nn);

@@ -26,12 +26,18 @@ pub fn names(program: &Program) -> Vec<&str> {
     program.temporal.iter().map(|t| t.name.as_str()).collect()
 }
 
-/// Split selected property names into temporal ones and the others (unchanged order).
+/// The built-in property decided on the position graph: no reachable state where the
+/// `assume`s allow no input vector. Reported when the system has temporal properties, or when
+/// named.
+pub const DEADLOCK_FREE: &str = "deadlock_free";
+
+/// Split selected property names into those this module decides (temporal ones and
+/// [`DEADLOCK_FREE`]) and the others (unchanged order).
 pub fn split(program: &Program, names: &[String]) -> (Vec<String>, Vec<String>) {
     names
         .iter()
         .cloned()
-        .partition(|n| program.temporal.iter().any(|t| &t.name == n))
+        .partition(|n| n == DEADLOCK_FREE || program.temporal.iter().any(|t| &t.name == n))
 }
 
 /// The kind word of a temporal property.
@@ -72,7 +78,11 @@ pub fn check(
         .filter(|t| selected.is_none_or(|s| s.contains(&t.name)))
         .collect();
     let mut stats = TemporalStats::default();
-    if props.is_empty() {
+    let deadlock = match selected {
+        None => !props.is_empty(),
+        Some(s) => s.iter().any(|n| n == DEADLOCK_FREE),
+    };
+    if props.is_empty() && !deadlock {
         return (Vec::new(), stats);
     }
     let unknown = |name: &str, w: Written, why: String| PropResult {
@@ -157,7 +167,7 @@ pub fn check(
     stats.graph_bytes = g.bytes();
     stats.deadlocks = g.deadlocks.len() as u64;
     let max_product = opts.max_states.unwrap_or(MAX_PRODUCT).min(MAX_PRODUCT);
-    let results = props
+    let mut results: Vec<PropResult> = props
         .iter()
         .zip(automata)
         .map(|(p, aut)| match (&p.formula, aut) {
@@ -205,5 +215,29 @@ pub fn check(
             }
         })
         .collect();
+    if deadlock {
+        results.push(deadlock_result(program, &g));
+    }
     (results, stats)
+}
+
+/// `deadlock_free`: violated by the first deadlock found (breadth-first: a shortest
+/// scenario, whose last tick enters the deadlocked state).
+fn deadlock_result(program: &Program, g: &graph::Kripke) -> PropResult {
+    let mut r = PropResult::unknown(DEADLOCK_FREE, PropKind::Builtin);
+    match g.deadlocks.first() {
+        None => r.verdict = Verdict::Proved,
+        Some(&s) => {
+            let path = g.path_to(s);
+            r.verdict = Verdict::Violated;
+            r.depth = path.len() as u64;
+            r.counterexample = Some(
+                path.iter()
+                    .map(|&i| graph::input_vector(program, i))
+                    .collect(),
+            );
+            r.note = Some("after the last tick the `assume`s allow no input vector".into());
+        }
+    }
+    r
 }
