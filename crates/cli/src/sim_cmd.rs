@@ -16,7 +16,7 @@ pub struct SimArgs {
     /// The system (or chart) to simulate.
     #[arg(long)]
     system: Option<String>,
-    /// A scenario file: the inputs per tick.
+    /// A scenario file: the inputs per tick (`-`: standard input).
     #[arg(long, conflicts_with = "random")]
     scenario: Option<String>,
     /// Run N ticks of random inputs within their types and the `assume`s.
@@ -56,8 +56,15 @@ pub fn run(a: SimArgs) -> Result<u8> {
     };
     let run = match (&a.scenario, a.random) {
         (Some(path), _) => {
-            let text = std::fs::read_to_string(path)
-                .map_err(|e| anyhow::anyhow!("cannot read `{path}`: {e}"))?;
+            let text = if path == "-" {
+                let mut t = String::new();
+                std::io::Read::read_to_string(&mut std::io::stdin(), &mut t)
+                    .map_err(|e| anyhow::anyhow!("cannot read standard input: {e}"))?;
+                t
+            } else {
+                std::fs::read_to_string(path)
+                    .map_err(|e| anyhow::anyhow!("cannot read `{path}`: {e}"))?
+            };
             let sc = match scenario::parse(&text, &program) {
                 Ok(s) => s,
                 Err(errs) => {
