@@ -84,6 +84,7 @@ pub const CODES: &[CodeInfo] = &[
     code("W0307", "choice without `else`", "All guards of the choice can be false, and then the transition does not fire.", "lints.md"),
     code("W0308", "unused variable or event", "An input never read, an output never written, or a local never used.", "lints.md"),
     code("W0309", "local written but never read", "A local variable or event is written (or raised) but never read.", "lints.md"),
+    code("W0310", "transition without a target suppresses `during`", "A transition that fires ends its state's reaction for the tick (rule R4), internal ones included: in the ticks where it fires, the state's `during` action does not run. Do the transition's work inside `during` with an `if` to run both.", "lints.md"),
     code("E0701", "synthesis: bad instance", "Synthesis systems hold single instances of existing charts (no arrays): events synchronise by name.", "synthesis.md"),
     code("E0702", "synthesis: not a plant or requirement", "A synthesis system holds only `plant chart` and `requirement chart` instances.", "synthesis.md"),
     code("E0703", "synthesis: declaration other than an event", "Plant and requirement charts declare only `controllable event` and `uncontrollable event`.", "synthesis.md"),
