@@ -97,6 +97,15 @@ pub const CODES: &[CodeInfo] = &[
     code("E0710", "synthesis: bad transition", "A transition is `on EVENT -> STATE;` with an event of the chart and a sibling state as target.", "synthesis.md"),
     code("E0711", "synthesis: nondeterministic", "Two transitions on one event leave the same state.", "synthesis.md"),
     code("E0712", "synthesis: bad state requirement", "State requirements use `in(instance.State)`, `!`, `&&`, `||`, `true` and `false`.", "synthesis.md"),
+    code("E0801", "scenario: bad repeat count", "A scenario line ends with `* N` where N is a whole number of at least 1.", "language.md"),
+    code("E0802", "scenario: empty item", "Items of a scenario line are separated by single commas.", "language.md"),
+    code("E0803", "scenario: unknown input", "The name is not a free input of the system: it is misspelt (the hint suggests the closest input), or it is computed or connected inside the system.", "language.md"),
+    code("E0804", "scenario: ambiguous input", "A bare name matches inputs of several instances; qualify it as `instance.input`.", "language.md"),
+    code("E0805", "scenario: value given to an event", "An input event is present (its bare name on the line) or absent (left out); it takes no value, not even `true`.", "language.md"),
+    code("E0806", "scenario: variable without a value", "A bare name makes an event present; an input variable needs `name = value`.", "language.md"),
+    code("E0807", "scenario: value out of range", "The value lies outside the input's declared range `int[lo..hi]`.", "language.md"),
+    code("E0808", "scenario: value of the wrong type", "A `bool` takes `true` or `false` (not `1` or `0`), an enum one of its literals, an integer a decimal, hex or binary literal.", "language.md"),
+    code("E0809", "scenario: too long", "The scenario would expand (with its `* N` repeats) to more ticks than a run may have.", "language.md"),
 ];
 
 /// The entry of a code (case-insensitive), if any.

@@ -68,19 +68,12 @@ pub fn run(a: SimArgs) -> Result<u8> {
             let sc = match scenario::parse(&text, &program) {
                 Ok(s) => s,
                 Err(errs) => {
-                    for e in &errs {
-                        let line = text.lines().nth(e.line - 1).unwrap_or("");
-                        eprintln!("error: {} ({path}:{}:{})", e.message, e.line, e.col);
-                        eprintln!("  | {line}");
-                        eprintln!(
-                            "  | {}{}",
-                            " ".repeat(e.col - 1),
-                            "^".repeat(e.len.min(line.len().saturating_sub(e.col - 1)).max(1))
-                        );
-                        if let Some(h) = &e.hint {
-                            eprintln!("  = help: {h}");
-                        }
-                    }
+                    let shown = if path == "-" {
+                        "<stdin>"
+                    } else {
+                        path.as_str()
+                    };
+                    crate::diag::eprint(shown, &text, &scenario_diagnostics(&text, &errs));
                     return Err(Exit(1).into());
                 }
             };
@@ -182,4 +175,32 @@ fn describe_stop(
             format!("the inputs of tick {tick} violate `assume` #{} of the system (or no random inputs satisfy it)", assume + 1),
         ),
     }
+}
+
+/// Scenario errors as diagnostics (byte spans from their 1-based line and column), so that
+/// they render like the model's and follow `--message-format`.
+fn scenario_diagnostics(
+    text: &str,
+    errs: &[scenario::ScenarioError],
+) -> Vec<statecheck_base::Diagnostic> {
+    let starts: Vec<usize> = std::iter::once(0)
+        .chain(text.match_indices('\n').map(|(i, _)| i + 1))
+        .collect();
+    errs.iter()
+        .map(|e| {
+            let line_start = starts.get(e.line - 1).copied().unwrap_or(text.len());
+            let start = (line_start + e.col - 1).min(text.len());
+            let end = (start + e.len).min(text.len());
+            let mut d = statecheck_base::Diagnostic::error(
+                e.code,
+                e.message.clone(),
+                statecheck_base::Span::new(start, end),
+            )
+            .with_label("here");
+            if let Some(h) = &e.hint {
+                d = d.with_hint(h.clone());
+            }
+            d
+        })
+        .collect()
 }
