@@ -71,6 +71,11 @@ enum Command {
     Serve(serve_cmd::ServeArgs),
     /// Rewrite model files in the canonical layout (`--check`: only report).
     Fmt(fmt_cmd::FmtArgs),
+    /// Explain a diagnostic code (`statecheck explain E0111`); without a code, list them all.
+    Explain {
+        /// The code, e.g. E0111.
+        code: Option<String>,
+    },
     /// Run the language server on standard input and output (for editors; docs/tools.md).
     Lsp,
     /// Draw a system's charts as Graphviz DOT, optionally with coverage counts.
@@ -148,6 +153,7 @@ fn run(cli: Cli) -> Result<u8> {
         Command::Synth(args) => synth_cmd::run(args),
         Command::Serve(args) => serve_cmd::run(args),
         Command::Fmt(args) => fmt_cmd::run(args),
+        Command::Explain { code } => explain(code.as_deref()),
         Command::Lsp => {
             statecheck_lsp::serve_stdio()?;
             Ok(0)
@@ -178,6 +184,24 @@ fn run(cli: Cli) -> Result<u8> {
             write_out(output.as_deref(), &dot)?;
             Ok(0)
         }
+    }
+}
+
+/// `statecheck explain [CODE]`: the page of a code from the one table of codes, or the list.
+fn explain(code: Option<&str>) -> Result<u8> {
+    use statecheck_base::codes;
+    let Some(code) = code else {
+        for c in codes::CODES {
+            println!("{}  {}", c.code, c.title);
+        }
+        return Ok(0);
+    };
+    match codes::lookup(code) {
+        Some(c) => {
+            print!("{}", codes::page(c));
+            Ok(0)
+        }
+        None => anyhow::bail!("unknown diagnostic code `{code}`; `statecheck explain` lists them"),
     }
 }
 
