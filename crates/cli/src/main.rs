@@ -10,6 +10,7 @@ mod gen_cmd;
 mod load;
 mod output;
 mod sim_cmd;
+mod sim_sink;
 mod synth_cmd;
 mod verify_cmd;
 
