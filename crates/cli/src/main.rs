@@ -13,6 +13,7 @@ mod load;
 mod output;
 mod serve_cmd;
 mod sim_cmd;
+mod sim_sink;
 mod synth_cmd;
 mod verify_cmd;
 
