@@ -325,9 +325,11 @@ impl CEmit<'_> {
             BinOp::Le => c("<="),
             BinOp::Gt => c(">"),
             BinOp::Ge => c(">="),
-            BinOp::BitOr => format!("({x} | {y})"),
+            // Through the identity `sc_v`: gcc's -Wtautological-compare rejects a comparison
+            // of `x | K` or `x & K` with a constant it can decide, such as `(x | 4) != 1`.
+            BinOp::BitOr => format!("sc_v({x} | {y})"),
             BinOp::BitXor => format!("({x} ^ {y})"),
-            BinOp::BitAnd => format!("({x} & {y})"),
+            BinOp::BitAnd => format!("sc_v({x} & {y})"),
             BinOp::Div | BinOp::Rem if is_pure => {
                 let s = if op == BinOp::Div { "/" } else { "%" };
                 format!("({x} {s} {y})")
