@@ -56,24 +56,16 @@ pub fn run(a: SimArgs) -> Result<u8> {
     };
     let run = match (&a.scenario, a.random) {
         (Some(path), _) => {
+            crate::outpath::note_input(path);
             let text = std::fs::read_to_string(path)
                 .map_err(|e| anyhow::anyhow!("cannot read `{path}`: {e}"))?;
             let sc = match scenario::parse(&text, &program) {
                 Ok(s) => s,
                 Err(errs) => {
-                    for e in &errs {
-                        let line = text.lines().nth(e.line - 1).unwrap_or("");
-                        eprintln!("error: {} ({path}:{}:{})", e.message, e.line, e.col);
-                        eprintln!("  | {line}");
-                        eprintln!(
-                            "  | {}{}",
-                            " ".repeat(e.col - 1),
-                            "^".repeat(e.len.min(line.len().saturating_sub(e.col - 1)).max(1))
-                        );
-                        if let Some(h) = &e.hint {
-                            eprintln!("  = help: {h}");
-                        }
-                    }
+                    eprint!(
+                        "{}",
+                        crate::diag::render_scenario_errors(path, &text, &errs)
+                    );
                     return Err(Exit(1).into());
                 }
             };
