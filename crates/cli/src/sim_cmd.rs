@@ -78,6 +78,9 @@ pub fn run(a: SimArgs) -> Result<u8> {
     };
     let (run, sink) = match (&a.scenario, a.random) {
         (Some(path), _) => {
+            if path != "-" {
+                crate::outpath::note_input(path);
+            }
             let text = if path == "-" {
                 let mut t = String::new();
                 std::io::Read::read_to_string(&mut std::io::stdin(), &mut t)
@@ -95,7 +98,9 @@ pub fn run(a: SimArgs) -> Result<u8> {
                     } else {
                         path.as_str()
                     };
-                    crate::diag::eprint(shown, &text, &scenario_diagnostics(&text, &errs));
+                    let (kept, more) = crate::diag::cap_scenario_errors(&errs);
+                    crate::diag::eprint(shown, &text, &scenario_diagnostics(&text, &kept));
+                    eprint!("{more}");
                     return Err(Exit(1).into());
                 }
             };
