@@ -54,9 +54,7 @@ fn parity_problem() -> Problem {
         });
     }
     let mut next = vec![NONE; 2 * n];
-    for i in 0..K {
-        next[i] = 0;
-    }
+    next[..K].fill(0);
     next[go as usize] = 1;
     next[n + back as usize] = 0;
     let mut alphabet: Vec<u32> = (0..K as u32).collect();
