@@ -15,6 +15,7 @@ mod output;
 mod serve_cmd;
 mod sim_cmd;
 mod sim_sink;
+mod supervisor;
 mod synth_cmd;
 mod verify_cmd;
 
