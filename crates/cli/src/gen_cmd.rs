@@ -3,7 +3,8 @@
 use crate::load;
 use anyhow::{bail, Context, Result};
 use clap::Args;
-use statecheck_codegen::{Observables, Source};
+use statecheck_codegen::Source;
+use statecheck_ir::view::TraceView;
 use std::path::Path;
 
 /// Arguments of `statecheck gen`.
@@ -42,12 +43,12 @@ pub fn run(a: GenArgs) -> Result<u8> {
     match a.target.as_str() {
         "c" => {
             let dir = out_dir(a.output.as_deref())?;
-            let names = statecheck_codegen::observe::value_names(&loaded.model, &program);
+            let names = statecheck_ir::view::value_names(&loaded.model, &program);
             let files = statecheck_codegen::c::generate_named(&program, &src, &prefix, Some(names));
             write(&dir.join(format!("{}.h", files.prefix)), &files.header)?;
             write(&dir.join(format!("{}.c", files.prefix)), &files.source)?;
             if a.harness {
-                let obs = Observables::new(&loaded.model, &program);
+                let obs = TraceView::new(&loaded.model, &program);
                 let h = statecheck_codegen::c_harness(&program, &src, &obs, &prefix);
                 write(&dir.join(format!("{}_harness.c", files.prefix)), &h)?;
             }

@@ -11,6 +11,7 @@ mod fmt_cmd;
 mod gen_cmd;
 mod load;
 mod output;
+mod serve_cmd;
 mod sim_cmd;
 mod synth_cmd;
 mod verify_cmd;
@@ -66,6 +67,8 @@ enum Command {
     Export(export_cmd::ExportCommand),
     /// Synthesize a maximally permissive, controllable, nonblocking supervisor.
     Synth(synth_cmd::SynthArgs),
+    /// Serve the validation studio: a local web page that animates the charts.
+    Serve(serve_cmd::ServeArgs),
     /// Rewrite model files in the canonical layout (`--check`: only report).
     Fmt(fmt_cmd::FmtArgs),
     /// Explain a diagnostic code (`statecheck explain E0111`); without a code, list them all.
@@ -148,6 +151,7 @@ fn run(cli: Cli) -> Result<u8> {
         Command::Gen(args) => gen_cmd::run(args),
         Command::Export(c) => export_cmd::run(c),
         Command::Synth(args) => synth_cmd::run(args),
+        Command::Serve(args) => serve_cmd::run(args),
         Command::Fmt(args) => fmt_cmd::run(args),
         Command::Explain { code } => explain(code.as_deref()),
         Command::Lsp => {

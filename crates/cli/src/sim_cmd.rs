@@ -1,11 +1,12 @@
 //! `statecheck sim`: run a system on a scenario or random inputs and show the trace.
 
 use crate::load;
-use crate::output::{self, view::Views};
+use crate::output;
 use crate::{write_out, Exit};
 use anyhow::{bail, Result};
 use clap::Args;
 use statecheck_base::LineIndex;
+use statecheck_ir::view::TraceView as Views;
 use statecheck_sim::{random::RandomInputs, scenario, Options, ScenarioInputs, Stop};
 
 /// Arguments of `statecheck sim`.
@@ -77,7 +78,19 @@ pub fn run(a: SimArgs) -> Result<u8> {
                     return Err(Exit(1).into());
                 }
             };
-            statecheck_sim::run(&program, &mut ScenarioInputs::new(&sc), opts)
+            if sc.loop_start.is_some() {
+                let l = statecheck_sim::lasso::run_lasso(&program, &sc, opts);
+                if let Some(why) = &l.broken {
+                    eprintln!("error: {why} ({path})");
+                    return Err(Exit(1).into());
+                }
+                if !l.fair {
+                    eprintln!("note: the lasso is not fair (a `fair` constraint fails on its loop); temporal properties were not evaluated");
+                }
+                l.run
+            } else {
+                statecheck_sim::run(&program, &mut ScenarioInputs::new(&sc), opts)
+            }
         }
         (None, Some(n)) => statecheck_sim::run(&program, &mut RandomInputs::new(a.seed, n), opts),
         (None, None) => {

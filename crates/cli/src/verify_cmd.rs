@@ -12,7 +12,7 @@ mod symbolic;
 use crate::load;
 use anyhow::{bail, Result};
 use clap::Args;
-use statecheck_explicit::{human_bytes, verify, Backend, Options, Verdict};
+use statecheck_explicit::{human_bytes, Backend, Options, Verdict};
 use std::io::IsTerminal;
 use std::time::Duration;
 
@@ -154,9 +154,15 @@ pub fn run(a: VerifyArgs) -> Result<u8> {
         threads: a.threads.unwrap_or(0),
         force: a.force,
         backend: a.backend.into(),
+        compiler: Some(std::sync::Arc::new(statecheck_native::CCompiler)),
         ..Options::default()
     };
-    if let Some(run) = symbolic::run_model(&program, &opts, a.engine)? {
+    if a.engine != symbolic::EngineArg::Explicit {
+        let vopts = statecheck_verify::Options {
+            engine: a.engine.into(),
+            check: opts.clone(),
+        };
+        let run = statecheck_verify::verify(&program, &vopts, &|_| {})?;
         if let Some(cf) = &a.certificate {
             symbolic::write_certificate(&run, cf)?;
         }
@@ -185,12 +191,20 @@ pub fn run(a: VerifyArgs) -> Result<u8> {
             ));
         }
     };
-    let outcome = verify(&program, &opts, Some(&tick));
+    let vopts = statecheck_verify::Options {
+        engine: statecheck_verify::Engine::Explicit,
+        check: opts,
+    };
+    let outcome = statecheck_verify::verify(&program, &vopts, &|e| {
+        if let statecheck_verify::Event::Progress(p) = e {
+            tick(p)
+        }
+    });
     if let Some(b) = &bar {
         b.finish_and_clear();
     }
     let rep = match outcome {
-        Ok(r) => r,
+        Ok(r) => r.report,
         Err(e) => bail!("{e}"),
     };
     let cexs = cex::process(&loaded, &program, &rep, a.cex_dir.as_deref(), a.vcd)?;

@@ -178,7 +178,7 @@ pub fn generate(p: &Program, src: &Source, prefix: &str) -> CFiles {
     generate_named(p, src, prefix, None)
 }
 
-/// [`generate`], with the value names of slots (see [`crate::observe::value_names`]) so that
+/// [`generate`], with the value names of slots (see `statecheck_ir::view::value_names`) so that
 /// active-state selectors get enums naming their states.
 pub fn generate_named(
     p: &Program,

@@ -7,7 +7,7 @@
 use crate::c::{Names, RUNTIME};
 use crate::c_expr::{lets_in_expr, CEmit};
 use crate::common::Source;
-use crate::observe::Observables;
+use statecheck_ir::view::TraceView;
 use statecheck_ir::{ExprId, Program, PropertyKind, ValueKind};
 use std::collections::BTreeSet;
 use std::fmt::Write;
@@ -18,7 +18,7 @@ const GENERIC: &str = include_str!("c_harness_lib.c");
 const PRINT_ENUM: &str = "static inline void print_enum(const char *const *l, int n, int64_t v) {\n    if (v >= 0 && v < n) printf(\"\\\"%s\\\"\", l[v]);\n    else printf(\"\\\"%lld\\\"\", (long long)v);\n}\n\n";
 
 /// Generate `PREFIX_harness.c` for `p` (the program generated with the same `prefix`).
-pub fn harness(p: &Program, src: &Source, obs: &Observables, prefix: &str) -> String {
+pub fn harness(p: &Program, src: &Source, obs: &TraceView, prefix: &str) -> String {
     let n = Names::new(p, &crate::common::ident(prefix).to_lowercase());
     let pf = n.prefix.clone();
     let mut c = String::new();
@@ -121,8 +121,8 @@ pub fn harness(p: &Program, src: &Source, obs: &Observables, prefix: &str) -> St
             "    printf(\"{comma}\\\"{}\\\":[\");\n    first = 1;",
             esc(&inst.name)
         );
-        for (path, e, _) in &inst.states {
-            let e = ix(*e, &mut exprs);
+        for s in &inst.states {
+            let (path, e) = (&s.path, ix(s.active, &mut exprs));
             let _ = writeln!(
                 tick_fn,
                 "    if (x_{e}(v)) {{ printf(\"%s\\\"{}\\\"\", first ? \"\" : \",\"); first = 0; }}",
@@ -132,7 +132,8 @@ pub fn harness(p: &Program, src: &Source, obs: &Observables, prefix: &str) -> St
         tick_fn.push_str("    printf(\"]\");\n");
     }
     tick_fn.push_str("    printf(\"},\\\"vars\\\":{\");\n");
-    for (k, (name, slot, kind)) in obs.vars.iter().enumerate() {
+    for (k, v) in obs.vars.iter().enumerate() {
+        let (name, slot, kind) = (&v.name, v.slot, &v.display);
         let comma = if k > 0 { "," } else { "" };
         let _ = writeln!(tick_fn, "    printf(\"{comma}\\\"{}\\\":\");", esc(name));
         match kind {

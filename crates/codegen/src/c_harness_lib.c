@@ -37,8 +37,10 @@ static int parse_int(const char *t, int64_t *out) {
         v = v * (uint64_t)base + (uint64_t)d;
         any = 1;
     }
-    if (!any || v > (uint64_t)INT64_MAX) return 0;
-    *out = neg ? -(int64_t)v : (int64_t)v;
+    /* the magnitude of INT64_MIN is INT64_MAX + 1: every int64 value reads back */
+    if (!any || v > (uint64_t)INT64_MAX + (uint64_t)neg) return 0;
+    if (neg) *out = v > (uint64_t)INT64_MAX ? INT64_MIN : -(int64_t)v;
+    else *out = (int64_t)v;
     return 1;
 }
 

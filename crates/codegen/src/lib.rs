@@ -11,10 +11,8 @@ mod c_expr;
 mod c_harness;
 pub mod common;
 pub mod modelica;
-pub mod observe;
 pub mod promela;
 pub mod rust;
 
 pub use c_harness::harness as c_harness;
 pub use common::Source;
-pub use observe::Observables;

@@ -10,8 +10,8 @@
 
 use crate::c_expr::{lets_in_stmts, pure};
 use crate::common::{area, slot_fields, Area, Source};
+use statecheck_ir::{BinOp, UnOp};
 use statecheck_ir::{Node, Program, PropertyKind, SlotId, Stmt};
-use statecheck_syntax::ast::{BinOp, UnOp};
 use std::collections::BTreeSet;
 use std::fmt::Write;
 

@@ -4,8 +4,8 @@
 
 use crate::c_expr::lets_in_stmts;
 use crate::common::{area, ident, int_width, slot_fields, Area, Source};
+use statecheck_ir::{BinOp, UnOp};
 use statecheck_ir::{Node, Program, Slot, SlotId, Stmt, ValueKind};
-use statecheck_syntax::ast::{BinOp, UnOp};
 use std::collections::BTreeSet;
 use std::fmt::Write;
 

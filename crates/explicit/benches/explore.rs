@@ -40,6 +40,7 @@ fn main() {
     let opts = Options {
         threads,
         backend,
+        compiler: Some(std::sync::Arc::new(statecheck_native::CCompiler)),
         ..Options::default()
     };
     let report = match verify(&program, &opts, None) {

@@ -72,6 +72,7 @@ fn main() {
     let opts = Options {
         threads,
         backend,
+        compiler: Some(std::sync::Arc::new(statecheck_native::CCompiler)),
         max_states: Some(max_states),
         ..Options::default()
     };

@@ -202,7 +202,7 @@ impl Expander<'_> {
         open: &mut Open,
         out: &mut ChunkOut<K>,
     ) {
-        let name = e.kind.builtin_property();
+        let name = e.kind.builtin();
         let hit = self
             .specs
             .iter()

@@ -13,32 +13,39 @@
 //! only), per state (state only) or per transition ([`InputSpace`]).
 //!
 //! Successors come from the IR's register code, or from the same program compiled to machine
-//! code by the C code generator and the system's C compiler ([`Backend`], `native`): the
-//! interpreter stays the reference that the native code is compared against during the run.
+//! code by a [`SuccessorCompiler`] that the caller plugs in ([`Options::compiler`], [`Backend`];
+//! the `statecheck-native` crate provides one): the interpreter stays the reference that the
+//! native code is compared against during the run.
 //!
 //! To keep the visited set small (no parent pointers), a counterexample is rebuilt after the
 //! exploration by a second search, with parent links, up to the depth of the deepest violation,
 //! within what is left of the time budget.
 
 mod enumerate;
+mod error;
 mod expand;
 mod inputs;
 mod interval;
+pub mod ltl;
 mod native;
 pub mod pack;
 pub mod props;
 mod reads;
 mod search;
+pub mod successors;
 pub mod table;
 mod trace;
 
+pub use error::{Error, ErrorKind};
 pub use inputs::InputSpace;
 pub use props::{PropKind, BUILTINS};
+pub use statecheck_ir::verdict::{PropResult, Verdict};
+pub use successors::{CompiledSuccessors, SuccessorCompiler};
 
 use expand::Expander;
 use pack::{Key, Packer};
 use search::{search, End, Limits};
-use statecheck_ir::{Program, RuntimeError};
+use statecheck_ir::Program;
 use std::time::Duration;
 
 /// Above this many input vectors per tick, [`verify`] refuses unless [`Options::force`].
@@ -68,6 +75,9 @@ pub struct Options {
     /// With native successors, expand one state in this many (by position in its layer) with
     /// the interpreter too and compare; 0 never does (for tests of the native path alone).
     pub native_sample: u32,
+    /// What builds native successor generators; without one, the interpreter computes every
+    /// successor.
+    pub compiler: Option<std::sync::Arc<dyn SuccessorCompiler>>,
 }
 
 /// How the explicit engine computes successors.
@@ -112,6 +122,7 @@ impl Default for Options {
             max_branching: DEFAULT_MAX_BRANCHING,
             backend: Backend::Auto,
             native_sample: 64,
+            compiler: None,
         }
     }
 }
@@ -172,57 +183,6 @@ pub fn human_bytes(b: u64) -> String {
     } else {
         format!("{v:.1} {}", UNITS[u])
     }
-}
-
-/// The answer for one property.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Verdict {
-    /// Holds in every reachable state (exhaustive).
-    Proved,
-    /// A counterexample exists.
-    Violated,
-    /// A `reachable` target was reached (a witness exists).
-    Reachable,
-    /// A `reachable` target is reached in no reachable state (exhaustive).
-    Unreachable,
-    /// Nothing found up to the depth bound.
-    Bounded,
-    /// A limit stopped the run before an answer.
-    Unknown,
-}
-
-impl Verdict {
-    /// The JSON and table word.
-    pub fn as_str(self) -> &'static str {
-        match self {
-            Verdict::Proved => "proved",
-            Verdict::Violated => "violated",
-            Verdict::Reachable => "reachable",
-            Verdict::Unreachable => "unreachable",
-            Verdict::Bounded => "bounded",
-            Verdict::Unknown => "unknown",
-        }
-    }
-}
-
-/// The result for one property.
-#[derive(Clone, Debug)]
-pub struct PropResult {
-    /// Property name.
-    pub name: String,
-    /// Its kind.
-    pub kind: PropKind,
-    /// The verdict.
-    pub verdict: Verdict,
-    /// Ticks of the counterexample or witness; otherwise the depth explored.
-    pub depth: u64,
-    /// The input vectors of each tick (in `Program::inputs` order) of a shortest
-    /// counterexample or witness, ending with the deciding tick.
-    pub counterexample: Option<Vec<Vec<i64>>>,
-    /// The run-time error, for a violated built-in property.
-    pub error: Option<RuntimeError>,
-    /// Why a counterexample is missing, if it is.
-    pub note: Option<String>,
 }
 
 /// Statistics of a run.
@@ -313,9 +273,38 @@ pub fn verify(
     program: &Program,
     opts: &Options,
     progress: Option<&(dyn Fn(&Progress) + Sync)>,
-) -> Result<Report, String> {
+) -> Result<Report, Error> {
+    let (temporal, safety) = ltl::split(program, &opts.properties);
+    let mut report = verify_safety(
+        program,
+        &Options {
+            properties: safety.clone(),
+            ..opts.clone()
+        },
+        progress,
+        safety.is_empty() && !temporal.is_empty(),
+    )?;
+    if opts.properties.is_empty() || !temporal.is_empty() {
+        let sel = (!opts.properties.is_empty()).then_some(temporal.as_slice());
+        let (results, _) = ltl::check(program, sel, opts);
+        report.results.extend(results);
+    }
+    Ok(report)
+}
+
+/// The safety part of [`verify`]: every non-temporal property selected (none when `none`).
+fn verify_safety(
+    program: &Program,
+    opts: &Options,
+    progress: Option<&(dyn Fn(&Progress) + Sync)>,
+    none: bool,
+) -> Result<Report, Error> {
     let start = std::time::Instant::now();
-    let mut specs = props::select(program, &opts.properties)?;
+    let mut specs = if none {
+        Vec::new()
+    } else {
+        props::select(program, &opts.properties)?
+    };
     let mut init = statecheck_ir::Machine::new(program);
     props::mark_per_state(program, &mut specs, |c| expand::decides(&mut init, c));
     let mut space = InputSpace::new(program);
@@ -355,6 +344,7 @@ pub fn verify(
                 counterexample: None,
                 error: None,
                 note: None,
+                loop_start: None,
             })
             .collect();
         stats.limit = Some(limit);
@@ -363,7 +353,12 @@ pub fn verify(
     let pool = rayon::ThreadPoolBuilder::new()
         .num_threads(threads)
         .build()
-        .map_err(|e| format!("cannot start {threads} threads: {e}"))?;
+        .map_err(|e| Error {
+            kind: ErrorKind::Threads {
+                threads,
+                reason: e.to_string(),
+            },
+        })?;
     let native = prepare_native(program, &packer, &space, opts, &mut stats);
     let started = std::sync::atomic::AtomicBool::new(opts.backend != Backend::Auto);
     // With `auto`, a search that is still running compiles the native generator.
@@ -372,7 +367,9 @@ pub fn verify(
             if pr.elapsed >= AUTO_NATIVE_AFTER
                 && !started.swap(true, std::sync::atomic::Ordering::Relaxed)
             {
-                n.build_in_background(native::Pending::new(program, &packer));
+                if let Some(c) = opts.compiler.as_deref() {
+                    n.build_in_background(native::Pending::new(c, program, &packer));
+                }
             }
         }
         if let Some(f) = progress {
@@ -442,10 +439,16 @@ fn prepare_native(
     if opts.backend == Backend::Interpreter {
         return None;
     }
+    let Some(compiler) = opts.compiler.as_deref() else {
+        if opts.backend == Backend::Native {
+            stats.native_note = Some("no native code generator was given".into());
+        }
+        return None;
+    };
     let run = native::NativeRun::new(space, opts.native_sample);
     if opts.backend == Backend::Native {
         match &run {
-            Some(n) => n.build_now(native::Pending::new(program, packer)),
+            Some(n) => n.build_now(native::Pending::new(compiler, program, packer)),
             None => {
                 stats.native_note = Some("too many input vectors to list for native code".into())
             }
@@ -519,6 +522,7 @@ fn run<K: Key>(
                         counterexample,
                         error: f.error,
                         note,
+                        loop_start: None,
                     }
                 }
                 None => {
@@ -541,6 +545,7 @@ fn run<K: Key>(
                         counterexample: None,
                         error: None,
                         note: None,
+                        loop_start: None,
                     }
                 }
             }

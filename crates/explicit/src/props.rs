@@ -3,36 +3,8 @@
 
 use statecheck_ir::{ExprId, Prepared, Program, PropertyKind};
 
-/// Names of the built-in properties, violated by run-time errors.
-pub const BUILTINS: [&str; 3] = ["no_range_overflow", "no_division_by_zero", "no_bad_shift"];
-
-/// What kind of property (as printed and in JSON).
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum PropKind {
-    /// `invariant NAME: expr [assuming expr];`
-    Invariant,
-    /// `reachable NAME: expr;`
-    Reachable,
-    /// `respond NAME: trigger => response within N;`
-    Respond,
-    /// An observer chart's `error` state is never entered.
-    Observer,
-    /// A built-in property (no run-time error of a kind).
-    Builtin,
-}
-
-impl PropKind {
-    /// The JSON and table word.
-    pub fn as_str(self) -> &'static str {
-        match self {
-            PropKind::Invariant => "invariant",
-            PropKind::Reachable => "reachable",
-            PropKind::Respond => "respond",
-            PropKind::Observer => "observer",
-            PropKind::Builtin => "builtin",
-        }
-    }
-}
+use statecheck_ir::verdict::{self, Builtin, Source};
+pub use statecheck_ir::verdict::{PropKind, BUILTINS};
 
 /// An expression of a property, and its compiled form.
 #[derive(Clone, Copy, Debug)]
@@ -60,7 +32,7 @@ pub(crate) enum Check {
     /// Violated when `ok` does not hold (respond monitors, observers).
     Ok { ok: Expr },
     /// Violated by a run-time error whose built-in property has this name.
-    Builtin(&'static str),
+    Builtin(Builtin),
 }
 
 impl Check {
@@ -122,62 +94,41 @@ pub(crate) fn mark_per_state(
     }
 }
 
-/// Every property of a program: its own in declaration order, then the built-ins.
-pub fn all(program: &Program) -> Vec<Spec> {
+/// The checks of the given properties of a program.
+fn specs(program: &Program, refs: Vec<verdict::PropertyRef>) -> Vec<Spec> {
     let e = |id: &ExprId| Expr::new(program, *id);
-    let mut out: Vec<Spec> = program
-        .properties
-        .iter()
-        .map(|p| {
-            let (kind, check) = match &p.kind {
-                PropertyKind::Invariant { expr, assuming } => (
-                    PropKind::Invariant,
-                    Check::Invariant {
+    refs.into_iter()
+        .map(|r| {
+            let check = match r.source {
+                Source::Builtin(b) => Check::Builtin(b),
+                Source::Own(i) => match &program.properties[i].kind {
+                    PropertyKind::Invariant { expr, assuming } => Check::Invariant {
                         expr: e(expr),
                         assuming: assuming.as_ref().map(e),
                     },
-                ),
-                PropertyKind::Reachable { expr } => {
-                    (PropKind::Reachable, Check::Reachable { expr: e(expr) })
-                }
-                PropertyKind::Respond { ok, .. } => (PropKind::Respond, Check::Ok { ok: e(ok) }),
-                PropertyKind::Observer { ok, .. } => (PropKind::Observer, Check::Ok { ok: e(ok) }),
+                    PropertyKind::Reachable { expr } => Check::Reachable { expr: e(expr) },
+                    PropertyKind::Respond { ok, .. } | PropertyKind::Observer { ok, .. } => {
+                        Check::Ok { ok: e(ok) }
+                    }
+                },
             };
             Spec {
-                name: p.name.clone(),
-                kind,
+                name: r.name,
+                kind: r.kind,
                 check,
                 per_state: false,
                 after_tick: false,
             }
         })
-        .collect();
-    out.extend(BUILTINS.iter().map(|b| Spec {
-        name: (*b).to_string(),
-        kind: PropKind::Builtin,
-        check: Check::Builtin(b),
-        per_state: false,
-        after_tick: false,
-    }));
-    out
+        .collect()
+}
+
+/// Every property of a program: its own in declaration order, then the built-ins.
+pub fn all(program: &Program) -> Vec<Spec> {
+    specs(program, verdict::properties(program))
 }
 
 /// The properties named in `names` (all of them when `names` is empty), in declaration order.
-/// Errs with a message naming the unknown property and the known ones.
-pub fn select(program: &Program, names: &[String]) -> Result<Vec<Spec>, String> {
-    let all = all(program);
-    if names.is_empty() {
-        return Ok(all);
-    }
-    if let Some(bad) = names.iter().find(|n| !all.iter().any(|s| &s.name == *n)) {
-        let known: Vec<&str> = all.iter().map(|s| s.name.as_str()).collect();
-        return Err(format!(
-            "no property named `{bad}`; the properties are: {}",
-            known.join(", ")
-        ));
-    }
-    Ok(all
-        .into_iter()
-        .filter(|s| names.contains(&s.name))
-        .collect())
+pub fn select(program: &Program, names: &[String]) -> Result<Vec<Spec>, verdict::UnknownProperty> {
+    Ok(specs(program, verdict::select(program, names)?))
 }

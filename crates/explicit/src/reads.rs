@@ -2,8 +2,8 @@
 //! front (inputs only), once per state (state only) or on every transition (both), and a
 //! property once per new state instead of on every transition.
 
+use statecheck_ir::BinOp;
 use statecheck_ir::{ExprId, Node, Program};
-use statecheck_syntax::ast::BinOp;
 use std::ops::Range;
 
 /// True when expression `e` reads no slot outside `slots`. Every node kind is followed,

@@ -4,61 +4,10 @@
 //! per step (an error, which ends the step, allocates its report); the checkers run one
 //! machine per thread and load and store packed states around each step.
 
+use crate::error::{fault, op_fault, Fault, RuntimeError, RuntimeErrorKind};
 use crate::program::*;
 use statecheck_model::ops;
 use statecheck_syntax::ast::BinOp;
-
-/// Why a tick stopped.
-#[derive(Clone, Debug, PartialEq, Eq)]
-pub struct RuntimeError {
-    /// What went wrong.
-    pub kind: RuntimeErrorKind,
-    /// Where (index into [`Program::sites`]).
-    pub site: SiteId,
-}
-
-/// The kinds of run-time error.
-#[derive(Clone, Debug, PartialEq, Eq)]
-pub enum RuntimeErrorKind {
-    /// A value outside the destination's range.
-    Range {
-        /// The value.
-        value: i64,
-        /// Allowed minimum.
-        lo: i64,
-        /// Allowed maximum.
-        hi: i64,
-    },
-    /// Division or remainder by zero.
-    DivisionByZero,
-    /// Shift amount outside `0..=62`.
-    BadShift,
-    /// A 64-bit overflow in an intermediate result.
-    Overflow,
-}
-
-impl RuntimeErrorKind {
-    /// The built-in property this error violates.
-    pub fn builtin_property(&self) -> &'static str {
-        match self {
-            RuntimeErrorKind::Range { .. } | RuntimeErrorKind::Overflow => "no_range_overflow",
-            RuntimeErrorKind::DivisionByZero => "no_division_by_zero",
-            RuntimeErrorKind::BadShift => "no_bad_shift",
-        }
-    }
-
-    /// A sentence describing the error.
-    pub fn describe(&self) -> String {
-        match self {
-            RuntimeErrorKind::Range { value, lo, hi } => {
-                format!("value {value} is out of range {lo}..{hi}")
-            }
-            RuntimeErrorKind::DivisionByZero => "division by zero".into(),
-            RuntimeErrorKind::BadShift => "shift amount outside 0..62".into(),
-            RuntimeErrorKind::Overflow => "arithmetic overflow".into(),
-        }
-    }
-}
 
 impl Program {
     /// Expression `e` ready for [`Machine::holds`]: its compiled code when it has some (the
@@ -94,13 +43,6 @@ impl Program {
             None => e.kind.describe(),
         }
     }
-}
-
-/// Errors travel boxed so that `Result<i64, Fault>` fits in two registers on the hot path.
-type Fault = Box<RuntimeError>;
-
-fn fault(kind: RuntimeErrorKind, site: SiteId) -> Fault {
-    Box::new(RuntimeError { kind, site })
 }
 
 /// The state of one running system.
@@ -365,15 +307,6 @@ struct Eval<'a> {
     locals: &'a mut Vec<i64>,
 }
 
-pub(crate) fn op_fault(e: ops::OpError, site: SiteId) -> Fault {
-    let kind = match e {
-        ops::OpError::DivisionByZero => RuntimeErrorKind::DivisionByZero,
-        ops::OpError::BadShift => RuntimeErrorKind::BadShift,
-        ops::OpError::Overflow => RuntimeErrorKind::Overflow,
-    };
-    fault(kind, site)
-}
-
 impl Eval<'_> {
     fn eval(&mut self, e: ExprId) -> Result<i64, Fault> {
         Ok(match self.nodes[e as usize] {
@@ -404,8 +337,7 @@ impl Eval<'_> {
             Node::Max(a, b) => self.eval(a)?.max(self.eval(b)?),
             Node::Abs(a, site) => {
                 let a = self.eval(a)?;
-                a.checked_abs()
-                    .ok_or_else(|| fault(RuntimeErrorKind::Overflow, site))?
+                ops::abs(a).map_err(|err| op_fault(err, site))?
             }
             Node::Check(a, lo, hi, site) => {
                 let v = self.eval(a)?;

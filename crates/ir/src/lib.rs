@@ -8,12 +8,20 @@
 //! checkers and the code generators only execute or translate the program. [`Machine`] is the
 //! reference interpreter.
 
+mod error;
 mod interp;
 mod layout;
 pub mod lower;
 mod program;
+pub mod temporal;
+pub mod verdict;
+pub mod view;
 mod vm;
 
-pub use interp::{eval, Machine, Prepared, RuntimeError, RuntimeErrorKind};
+pub use error::{RuntimeError, RuntimeErrorKind};
+pub use interp::{eval, Machine, Prepared};
 pub use lower::lower;
 pub use program::*;
+/// The operators of IR expressions and the kinds of variables, as the syntax defines them;
+/// re-exported so that the IR's consumers need not depend on the parser.
+pub use statecheck_syntax::ast::{BinOp, UnOp, VarKind};

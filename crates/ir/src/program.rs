@@ -147,23 +147,27 @@ impl ValueKind {
     }
 }
 
+/// An integer in decimal, `0x` hex or `0b` binary with an optional `-` and `_` separators.
+/// The magnitude is read unsigned so that every `i64`, `-9223372036854775808` included, reads
+/// back what [`ValueKind::format`] wrote.
 fn parse_int(text: &str) -> Option<i64> {
     let (neg, digits) = match text.strip_prefix('-') {
         Some(d) => (true, d),
         None => (false, text),
     };
     let digits = digits.replace('_', "");
-    let v = if let Some(h) = digits
+    let mag = if let Some(h) = digits
         .strip_prefix("0x")
         .or_else(|| digits.strip_prefix("0X"))
     {
-        i64::from_str_radix(h, 16).ok()?
+        u64::from_str_radix(h, 16).ok()?
     } else if let Some(b) = digits.strip_prefix("0b") {
-        i64::from_str_radix(b, 2).ok()?
+        u64::from_str_radix(b, 2).ok()?
     } else {
-        digits.parse().ok()?
+        digits.parse::<u64>().ok()?
     };
-    Some(if neg { -v } else { v })
+    let v = if neg { -(mag as i128) } else { mag as i128 };
+    i64::try_from(v).ok()
 }
 
 impl Slot {
@@ -386,6 +390,11 @@ pub struct Program {
     pub assumes: Vec<ExprId>,
     /// Properties, checked on the state after each tick.
     pub properties: Vec<Property>,
+    /// Temporal properties (`ltl`, `ctl`, unbounded `respond`, `nonblocking`), decided on
+    /// runs rather than states (`crate::temporal`).
+    pub temporal: Vec<crate::temporal::TemporalProperty>,
+    /// Fairness constraints on the runs of the temporal properties.
+    pub fairness: Vec<crate::temporal::Fairness>,
     /// The `Started` slot.
     pub started: SlotId,
     /// Number of expression locals (see [`Node::Let`]).
@@ -408,5 +417,22 @@ impl Program {
     /// Total bits of a packed state vector.
     pub fn state_bits(&self) -> u32 {
         self.state_slots().iter().map(Slot::width).sum()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::ValueKind;
+
+    #[test]
+    fn scenario_integers_round_trip_over_the_full_i64_range() {
+        // IC3 once wrote `-9223372036854775808` (i64::MIN) that the reader then rejected.
+        for v in [i64::MIN, i64::MIN + 1, -1, 0, 1, i64::MAX] {
+            assert_eq!(ValueKind::Int.parse(&ValueKind::Int.format(v)), Some(v));
+        }
+        assert_eq!(ValueKind::Int.parse("-0x8000000000000000"), Some(i64::MIN));
+        // One past either end has no value.
+        assert_eq!(ValueKind::Int.parse("9223372036854775808"), None);
+        assert_eq!(ValueKind::Int.parse("-9223372036854775809"), None);
     }
 }

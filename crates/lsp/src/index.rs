@@ -553,6 +553,40 @@ impl Builder {
                 self.expr(response, cx);
                 self.expr(within, cx);
             }
+            PropertyKind::RespondEventually { trigger, response } => {
+                self.expr(trigger, cx);
+                self.expr(response, cx);
+            }
+            PropertyKind::Ltl { formula } | PropertyKind::Ctl { formula } => {
+                self.formula(formula, cx)
+            }
+            PropertyKind::Nonblocking { expr } => self.expr(expr, cx),
+            PropertyKind::Fair { trigger, expr } => {
+                if let Some(t) = trigger {
+                    self.expr(t, cx);
+                }
+                self.expr(expr, cx);
+            }
+        }
+    }
+
+    /// The atoms of a temporal formula (an explicit stack: formulas may be deep).
+    fn formula(&mut self, f: &statecheck_syntax::ast::Formula, cx: &Ctx) {
+        use statecheck_syntax::ast::Formula;
+        let mut stack = vec![f];
+        while let Some(f) = stack.pop() {
+            match f {
+                Formula::Atom(e) => self.expr(e, cx),
+                Formula::Not(a, _) | Formula::Unary(_, a, _) => stack.push(a),
+                Formula::And(a, b, _)
+                | Formula::Or(a, b, _)
+                | Formula::Implies(a, b, _)
+                | Formula::Binary(_, a, b, _)
+                | Formula::QuantUntil(_, a, b, _) => {
+                    stack.push(b);
+                    stack.push(a);
+                }
+            }
         }
     }
 

@@ -10,6 +10,7 @@
 mod cascade;
 mod chart;
 mod expr;
+pub mod formula;
 pub mod lint;
 pub mod model;
 pub mod ops;

@@ -56,9 +56,14 @@ fn clamp(v: i128) -> i64 {
     v.clamp(i64::MIN as i128 / 4, i64::MAX as i128 / 4) as i64
 }
 
+/// A 128-bit bound saturated to `i64`'s range.
+fn saturate(v: i128) -> i64 {
+    v.clamp(i64::MIN as i128, i64::MAX as i128) as i64
+}
+
 /// Interval arithmetic on `lo..=hi` bounds, saturating far from `i64`'s limits.
 pub mod interval {
-    use super::clamp;
+    use super::{clamp, saturate};
 
     /// Bounds of `a + b`.
     pub fn add(a: (i64, i64), b: (i64, i64)) -> (i64, i64) {
@@ -90,20 +95,38 @@ pub mod interval {
     }
 
     /// Bounds of `a / b` (truncating); a divisor range containing 0 is treated as excluding it.
+    /// Computed in 128 bits: `i64::MIN / -1` has no 64-bit value (the operation itself fails
+    /// at run time with an overflow), so its bound saturates at `i64::MAX`.
     pub fn div(a: (i64, i64), b: (i64, i64)) -> (i64, i64) {
-        let m = a.0.unsigned_abs().max(a.1.unsigned_abs()) as i64;
+        let m = (a.0 as i128).abs().max((a.1 as i128).abs());
         if b.0 > 0 || b.1 < 0 {
-            let mut c = Vec::with_capacity(4);
-            for x in [a.0, a.1] {
-                for y in [b.0, b.1] {
-                    c.push(x / y);
-                }
+            let mut c = [0i128; 4];
+            for (k, (x, y)) in [(a.0, b.0), (a.0, b.1), (a.1, b.0), (a.1, b.1)]
+                .into_iter()
+                .enumerate()
+            {
+                c[k] = x as i128 / y as i128;
             }
             let lo = c.iter().copied().min().unwrap_or(0);
             let hi = c.iter().copied().max().unwrap_or(0);
-            (lo.min(0).max(-m).min(lo), hi.max(0).min(m).max(hi))
+            (
+                saturate(lo.min(0).max(-m).min(lo)),
+                saturate(hi.max(0).min(m).max(hi)),
+            )
         } else {
-            (-m, m)
+            (saturate(-m), saturate(m))
+        }
+    }
+
+    /// Bounds of `abs(a)`, saturating at `i64::MAX` (`abs(i64::MIN)` fails at run time).
+    pub fn abs(a: (i64, i64)) -> (i64, i64) {
+        let (lo, hi) = (a.0 as i128, a.1 as i128);
+        if lo >= 0 {
+            a
+        } else if hi <= 0 {
+            (saturate(-hi), saturate(-lo))
+        } else {
+            (0, saturate((-lo).max(hi)))
         }
     }
 

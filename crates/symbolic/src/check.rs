@@ -5,7 +5,7 @@ use crate::aig::Aig;
 use crate::blast::{blast, Blasted, SharedProblem};
 use crate::engine::{Invariant, Limits, Outcome, Trace};
 use crate::scorr::{Reduction, SPURIOUS};
-use statecheck_explicit::{props, PropKind, PropResult, Verdict};
+use statecheck_ir::verdict::{self, PropKind, PropResult, Verdict};
 use statecheck_ir::{Machine, Program};
 use std::sync::{Arc, Mutex, OnceLock};
 use std::time::{Duration, Instant};
@@ -203,8 +203,8 @@ pub struct SymResult {
 pub fn problems(
     p: &Program,
     names: &[String],
-) -> Result<(Blasted, Vec<(usize, PropKind)>), String> {
-    let specs = props::select(p, names)?;
+) -> Result<(Blasted, Vec<(usize, PropKind)>), verdict::UnknownProperty> {
+    let specs = verdict::select(p, names)?;
     let bl = blast(p);
     let idx = specs
         .iter()
@@ -239,6 +239,7 @@ pub fn decide(
         counterexample: None,
         error: None,
         note: None,
+        loop_start: None,
     };
     let mut reason = None;
     match out {

@@ -144,3 +144,17 @@ fn mutated_files_never_panic() {
     }
     assert!(tried > 1000);
 }
+
+/// Header counts from an untrusted file are added with overflow checks: I = 2^64 - 1 and L = 2
+/// would wrap to I + L + A = 1 <= M = 1 and pass the header checks, then define variables
+/// far outside 1..M. The header is refused with a message that names the overflow.
+#[test]
+fn header_count_overflow_is_an_error() {
+    let max = u64::MAX;
+    for kind in ["aag", "aig"] {
+        let text = format!("{kind} 1 {max} 2 0 0\n");
+        let err = statecheck_symbolic::aiger::parse(text.as_bytes()).expect_err("refused");
+        assert_eq!(err.at, "line 1", "{kind}: {err}");
+        assert!(err.message.contains("overflows"), "{kind}: {err}");
+    }
+}

@@ -1,6 +1,6 @@
 //! Shared by the integration tests: every model of `tests/` and `examples/` that checks.
 
-#![allow(dead_code)]
+#![allow(dead_code)] // reason: each test binary that includes this module uses only some of it
 
 use std::path::{Path, PathBuf};
 

@@ -13,6 +13,7 @@
 
 pub mod ast;
 pub mod format;
+mod formula;
 mod lexer;
 mod parser;
 

@@ -5,7 +5,7 @@
 //! event names (the event the environment proposes this tick), and one output variable named
 //! `fire` of such an enum (the event that occurred, or `none`). The check explores the closed
 //! loop — the system's IR states (run with the reference [`Machine`], so with the semantics of
-//! `lower.rs`) paired with the locations of the plant and requirement automata of the
+//! `lower/`) paired with the locations of the plant and requirement automata of the
 //! *model*, which it tracks itself from the fired events — and reports:
 //!
 //! - **plant conformance**: a fired event must be the proposed one and possible in the plant;

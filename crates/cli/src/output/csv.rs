@@ -1,6 +1,6 @@
 //! CSV traces: one row per tick, one column per instance's active leaf states and per variable.
 
-use super::view::Views;
+use statecheck_ir::view::TraceView as Views;
 use statecheck_ir::Program;
 use statecheck_sim::TickRecord;
 
@@ -15,7 +15,7 @@ fn quote(s: &str) -> String {
 /// Render a trace as CSV with a header row.
 pub fn render(p: &Program, views: &Views, trace: &[TickRecord]) -> String {
     let mut header = vec!["tick".to_string()];
-    header.extend(views.instances.iter().map(|i| format!("{i}.active")));
+    header.extend(views.instances.iter().map(|i| format!("{}.active", i.name)));
     header.extend(views.vars.iter().map(|v| v.name.clone()));
     header.push("events".into());
     let mut out = header

@@ -1,7 +1,7 @@
 //! The JSON trace (a contract): `{"ticks":[{"tick","active","vars","events"}], ...}`.
 
-use super::view::Views;
 use serde_json::{json, Map, Value};
+use statecheck_ir::view::TraceView as Views;
 use statecheck_ir::{Program, ValueKind};
 use statecheck_sim::TickRecord;
 
@@ -17,8 +17,11 @@ pub fn value(kind: &ValueKind, v: i64) -> Value {
 /// One tick as a JSON object.
 pub fn tick(p: &Program, views: &Views, rec: &TickRecord) -> Value {
     let mut active = Map::new();
-    for (i, name) in views.instances.iter().enumerate() {
-        active.insert(name.clone(), json!(views.active(p, i, &rec.slots, false)));
+    for (i, inst) in views.instances.iter().enumerate() {
+        active.insert(
+            inst.name.clone(),
+            json!(views.active(p, i, &rec.slots, false)),
+        );
     }
     let mut vars = Map::new();
     for v in &views.vars {

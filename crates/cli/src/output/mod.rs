@@ -7,4 +7,3 @@ pub mod dot;
 pub mod json;
 pub mod table;
 pub mod vcd;
-pub mod view;

@@ -1,6 +1,6 @@
 //! The terminal table: per tick, the active leaf states and what changed.
 
-use super::view::Views;
+use statecheck_ir::view::TraceView as Views;
 use statecheck_ir::Program;
 use statecheck_sim::TickRecord;
 use std::fmt::Write;
@@ -16,7 +16,7 @@ pub fn render(p: &Program, views: &Views, trace: &[TickRecord]) -> String {
                 if views.instances.len() == 1 {
                     a
                 } else {
-                    format!("{}: {a}", views.instances[i])
+                    format!("{}: {a}", views.instances[i].name)
                 }
             })
             .collect();

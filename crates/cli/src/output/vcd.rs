@@ -1,7 +1,7 @@
 //! VCD waveforms (IEEE 1364 value change dump) that GTKWave opens: every variable, every
 //! event, and a 1-bit signal per state that is high while the state is active.
 
-use super::view::Views;
+use statecheck_ir::view::TraceView as Views;
 use statecheck_ir::{eval, Program};
 use statecheck_sim::TickRecord;
 use std::fmt::Write;
@@ -48,6 +48,7 @@ pub fn render(p: &Program, views: &Views, trace: &[TickRecord], tick_ms: i64) ->
         env!("CARGO_PKG_VERSION")
     );
     for (i, inst) in views.instances.iter().enumerate() {
+        let inst = &inst.name;
         let _ = writeln!(out, "$scope module {} $end", vcd_name(inst));
         let prefix = format!("{inst}.");
         for v in views.vars.iter().filter(|v| v.name.starts_with(&prefix)) {
@@ -80,7 +81,8 @@ pub fn render(p: &Program, views: &Views, trace: &[TickRecord], tick_ms: i64) ->
         // `GoLeft` in scope `Go` in scope `states` (the wire `Go` sits beside scope `Go`).
         let _ = writeln!(out, "$scope module states $end");
         let mut open: Vec<String> = Vec::new();
-        for (path, e, _) in &views.states[i] {
+        for s in &views.instances[i].states {
+            let (path, e) = (&s.path, &s.active);
             let parts: Vec<&str> = path.split('.').collect();
             let (parent, leaf) = parts.split_at(parts.len() - 1);
             let common = open

@@ -3,10 +3,11 @@
 
 use super::cex::Cex;
 use crate::load::Loaded;
-use crate::output::{table, view::Views};
+use crate::output::table;
 use serde_json::{json, Value};
 use statecheck_base::LineIndex;
 use statecheck_explicit::{human_bytes, InputSpace, Options, Report, Stats, Verdict};
+use statecheck_ir::view::TraceView as Views;
 use statecheck_ir::{CoverKind, Program};
 use std::fmt::Write;
 
@@ -39,20 +40,7 @@ fn num(v: u128) -> Value {
     u64::try_from(v).map_or_else(|_| json!(v.to_string()), |x| json!(x))
 }
 
-/// Which engine decided a result, how long it took, and why it is `unknown` (symbolic
-/// engines; the explicit engine's run has one time and one limit for all properties).
-#[derive(Clone, Debug, Default)]
-pub struct Meta {
-    /// `explicit`, `bmc`, `kind` or `ic3`.
-    pub engine: &'static str,
-    /// Seconds spent on this property.
-    pub time_s: Option<f64>,
-    /// Why the verdict is `unknown`.
-    pub reason: Option<String>,
-    /// `--engine auto`: seconds from the start of the run to the verdict (the engines run side
-    /// by side, so this, not `time_s`, is when the user had the answer).
-    pub decided_at_s: Option<f64>,
-}
+pub use statecheck_verify::Meta;
 
 /// The JSON object of `statecheck verify --json`.
 pub fn json(p: &Program, source: &str, rep: &Report, cexs: &[Option<Cex>], meta: &[Meta]) -> Value {
@@ -83,6 +71,9 @@ pub fn json(p: &Program, source: &str, rep: &Report, cexs: &[Option<Cex>], meta:
                 if let Some(m) = &c.mismatch {
                     o["replay_note"] = json!(m);
                 }
+            }
+            if let Some(k) = r.loop_start {
+                o["loop_start"] = json!(k);
             }
             if let Some(e) = &r.error {
                 o["message"] = json!(p.describe_error(e));

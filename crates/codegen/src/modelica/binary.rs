@@ -6,8 +6,8 @@
 use super::expr::{Emit, V};
 use super::names::Ty;
 use super::text::{string_lit, strip, strip_rhs};
+use statecheck_ir::BinOp;
 use statecheck_ir::Node;
-use statecheck_syntax::ast::BinOp;
 
 impl Emit<'_> {
     /// Node `e`, the binary operation `op` of `a` and `b` with run-time check site `site`.

@@ -6,9 +6,9 @@ use super::names::{Names, Ty};
 use super::text::string_lit;
 use super::ModelicaOptions;
 use crate::common::{area, Area, Source};
+use statecheck_ir::VarKind;
 use statecheck_ir::{CoverKind, Program, SlotRole};
 use statecheck_model::Model;
-use statecheck_syntax::ast::VarKind;
 use std::collections::BTreeSet;
 use std::fmt::Write;
 

@@ -15,8 +15,8 @@
 use super::names::{Names, Ty};
 use super::text::{int_lit, string_lit, strip, strip_rhs};
 use crate::common::Source;
+use statecheck_ir::{BinOp, UnOp};
 use statecheck_ir::{Node, Program};
-use statecheck_syntax::ast::{BinOp, UnOp};
 use std::collections::BTreeSet;
 
 /// Helpers a program uses (so that only those are emitted).

@@ -1,98 +1,58 @@
 //! Native successor generation: the program's step function compiled to machine code.
 //!
 //! The explicit engine normally runs the IR's register code ([`statecheck_ir::Machine`]). A
-//! [`Native`] generator is the same program translated by the C code generator (the code
-//! `statecheck gen c` ships, so what is checked is what runs), wrapped by [`glue`] in a
-//! function that expands one packed state for a list of input vectors, compiled by the
-//! system's C compiler ([`build`]) and loaded as a shared library.
+//! [`Native`] generator is built by the [`SuccessorCompiler`] of [`crate::Options`] (in
+//! practice `statecheck-native`: the C step function of the code generator, compiled and
+//! loaded), and expands one packed state for a list of input vectors.
 //!
 //! The interpreter stays the reference: every run-time error is replayed by it (for the error
 //! site and message), and the expander compares the two on a sample of states during every
 //! search; a disagreement makes the run fall back to the interpreter (see `lib.rs`).
 
-mod build;
 mod expand;
-mod glue;
 
 use crate::inputs::InputSpace;
 use crate::pack::Packer;
+use crate::successors::{Build, CompiledSuccessors, SuccessorCompiler};
 use statecheck_ir::Program;
 use std::sync::{Arc, OnceLock};
 use std::time::{Duration, Instant};
 
-/// `sc_expand` of [`glue::source`].
-type ExpandFn =
-    unsafe extern "C" fn(*const u64, *const i64, *const u32, u32, *mut u64, *mut i32, *mut u8);
-
-/// A generated successor generator, not yet compiled: all that compiling needs, owned, so that
-/// it can be compiled on another thread.
+/// A generator not yet built: the build step, and when its preparation started.
 pub(crate) struct Pending {
-    source: String,
-    words: usize,
-    n_inputs: usize,
-    covers: usize,
+    build: Build,
     started: Instant,
 }
 
 impl Pending {
-    /// Generate the C source for `program` packed by `packer`.
-    pub fn new(program: &Program, packer: &Packer) -> Pending {
+    /// Prepare a generator for `program` packed by `packer`.
+    pub fn new(compiler: &dyn SuccessorCompiler, program: &Program, packer: &Packer) -> Pending {
         let started = Instant::now();
         Pending {
-            source: glue::source(program, packer),
-            words: packer.words,
-            n_inputs: program.inputs.len(),
-            covers: program.covers.len(),
+            build: compiler.prepare(program, packer),
             started,
         }
     }
 
-    /// Compile (or find in the cache) and load.
+    /// Build (compile, or find in a cache, and load).
     pub fn build(self) -> Result<Native, String> {
-        let path = build::library(&self.source)?;
-        let (lib, expand) = load(&path)?;
+        let generator = (self.build)()?;
         Ok(Native {
-            _lib: lib,
-            expand,
-            words: self.words,
-            n_inputs: self.n_inputs,
-            covers: self.covers,
+            generator,
             build_time: self.started.elapsed(),
         })
     }
 }
 
-/// A loaded native successor generator.
+/// A built successor generator.
 pub(crate) struct Native {
-    /// Keeps the code of `expand` mapped.
-    _lib: libloading::Library,
-    expand: ExpandFn,
-    words: usize,
-    n_inputs: usize,
-    covers: usize,
+    generator: Box<dyn CompiledSuccessors>,
     /// Time to generate, compile and load it.
     pub build_time: Duration,
 }
 
-/// Load `sc_expand` from the library at `path`.
-#[allow(unsafe_code)] // Loading a library runs its initialisers: ours is generated C without any.
-fn load(path: &std::path::Path) -> Result<(libloading::Library, ExpandFn), String> {
-    let fail = |e: libloading::Error| format!("cannot load {}: {e}", path.display());
-    // SAFETY: the library is the one `build` compiled from our generated source, which has no
-    // initialisers, and `sc_expand` has exactly the signature of `ExpandFn`.
-    unsafe {
-        let lib = libloading::Library::new(path).map_err(fail)?;
-        let f: ExpandFn = *lib.get::<ExpandFn>(b"sc_expand\0").map_err(fail)?;
-        Ok((lib, f))
-    }
-}
-
 impl Native {
-    /// Expand the packed state `state` for the input vectors `vectors[idx[k]]` (each
-    /// `n_inputs` values): `status[k]` is 0 and `out[k * words ..][..words]` the packed
-    /// successor, or `status[k]` is the run-time error's status. Coverage items hit set their
-    /// byte in `covers`. False (and nothing done) when a slice is too short for the call.
-    #[allow(unsafe_code)] // The call into the generated code, after every bound is checked.
+    /// [`CompiledSuccessors::expand`].
     pub fn expand(
         &self,
         state: &[u64],
@@ -102,35 +62,8 @@ impl Native {
         status: &mut [i32],
         covers: &mut [u8],
     ) -> bool {
-        let n_vectors = vectors
-            .len()
-            .checked_div(self.n_inputs)
-            .unwrap_or(usize::MAX);
-        let fits = state.len() >= self.words
-            && out.len() >= idx.len() * self.words
-            && status.len() >= idx.len()
-            && covers.len() >= self.covers.max(1)
-            && u32::try_from(idx.len()).is_ok()
-            && idx.iter().all(|&i| (i as usize) < n_vectors);
-        if !fits {
-            return false;
-        }
-        // SAFETY: checked above: `sc_expand` reads at most `words` words of `state`, `n_inputs`
-        // values at each `idx[k] * n_inputs` of `vectors`, and writes at most
-        // `idx.len() * words` words of `out`, `idx.len()` statuses and bytes below the number
-        // of coverage items of `covers`.
-        unsafe {
-            (self.expand)(
-                state.as_ptr(),
-                vectors.as_ptr(),
-                idx.as_ptr(),
-                idx.len() as u32,
-                out.as_mut_ptr(),
-                status.as_mut_ptr(),
-                covers.as_mut_ptr(),
-            );
-        }
-        true
+        self.generator
+            .expand(state, vectors, idx, out, status, covers)
     }
 }
 

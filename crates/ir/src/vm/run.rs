@@ -7,7 +7,7 @@
 
 use super::op::Op;
 use super::Code;
-use crate::interp::{op_fault, RuntimeError, RuntimeErrorKind as K};
+use crate::error::{op_fault, RuntimeError, RuntimeErrorKind as K};
 use statecheck_syntax::ast::BinOp;
 
 /// The error of the instruction before `next` (the loop has moved past it).

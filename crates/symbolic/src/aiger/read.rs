@@ -126,16 +126,19 @@ pub fn parse(bytes: &[u8]) -> Result<Aig, AigerError> {
     if m > u64::from(u32::MAX >> 2) {
         return Err(herr(format!("too many variables ({m})")));
     }
-    if binary && ni + nl + na != m {
+    // The counts come from an untrusted file: their sum may overflow.
+    let defined = ni
+        .checked_add(nl)
+        .and_then(|x| x.checked_add(na))
+        .ok_or_else(|| herr(format!("I + L + A = {ni} + {nl} + {na} overflows")))?;
+    if binary && defined != m {
         return Err(herr(format!(
-            "binary AIGER needs M = I + L + A ({m} != {})",
-            ni + nl + na
+            "binary AIGER needs M = I + L + A ({m} != {defined})"
         )));
     }
-    if ni + nl + na > m {
+    if defined > m {
         return Err(herr(format!(
-            "M = {m} is smaller than I + L + A = {}",
-            ni + nl + na
+            "M = {m} is smaller than I + L + A = {defined}"
         )));
     }
     // Sanity bound so that a corrupt header cannot make us allocate without limit.

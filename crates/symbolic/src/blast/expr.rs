@@ -3,10 +3,10 @@
 use super::Blaster;
 use crate::aig::Lit;
 use crate::bv::{self, Bv};
+use statecheck_ir::{BinOp, UnOp};
 use statecheck_ir::{ExprId, Node};
-use statecheck_syntax::ast::{BinOp, UnOp};
 
-/// Error kinds, indexed like `statecheck_explicit::BUILTINS`.
+/// Error kinds, indexed like `statecheck_ir::verdict::Builtin::ALL`.
 pub const RANGE: usize = 0;
 /// Division or remainder by zero.
 pub const DIV_ZERO: usize = 1;

@@ -85,7 +85,7 @@ pub struct Blasted {
     pub assume: Lit,
     /// The step has a run-time error of each kind (first error in execution order).
     pub errs: [Lit; 3],
-    /// Every property: the program's, then the built-ins (in `statecheck_explicit` order).
+    /// Every property: the program's, then the built-ins (in `statecheck_ir::verdict::properties` order).
     pub props: Vec<PropSignal>,
     /// The value of every slot after the step (for tests and diagnostics).
     pub post: Vec<Bv>,
@@ -191,12 +191,10 @@ pub fn blast(p: &Program) -> Blasted {
             bad,
         });
     }
-    for (k, name) in ["no_range_overflow", "no_division_by_zero", "no_bad_shift"]
-        .iter()
-        .enumerate()
-    {
+    for builtin in statecheck_ir::verdict::Builtin::ALL {
+        let k = builtin.index();
         props.push(PropSignal {
-            name: (*name).to_string(),
+            name: builtin.name().to_string(),
             builtin: Some(k),
             reachable: false,
             bad: b.errs[k],

@@ -2,8 +2,8 @@
 
 use super::{Printer, WIDTH};
 use crate::ast::{
-    Chart, Control, File, FnDecl, Item, Property, PropertyKind, RequirementKind, System, VarDecl,
-    VarKind,
+    BinOp, Chart, Control, Expr, File, FnDecl, Formula, Item, Property, PropertyKind, Quant,
+    RequirementKind, System, VarDecl, VarKind,
 };
 use statecheck_base::Span;
 
@@ -256,7 +256,12 @@ impl Printer<'_> {
             PropertyKind::Reachable { expr } => {
                 self.line_expr(p.span, &format!("reachable {n}:"), expr, ";");
             }
-            PropertyKind::Respond { .. } => {
+            PropertyKind::Respond { .. }
+            | PropertyKind::RespondEventually { .. }
+            | PropertyKind::Ltl { .. }
+            | PropertyKind::Ctl { .. }
+            | PropertyKind::Nonblocking { .. }
+            | PropertyKind::Fair { .. } => {
                 let t = self.property(p);
                 self.line(p.span, &t);
             }
@@ -285,6 +290,62 @@ impl Printer<'_> {
                 self.expr(response),
                 self.expr(within)
             ),
+            PropertyKind::RespondEventually { trigger, response } => format!(
+                "respond {n}: {} => {};",
+                self.expr(trigger),
+                self.expr(response)
+            ),
+            PropertyKind::Ltl { formula } => format!("ltl {n}: {};", self.formula(formula)),
+            PropertyKind::Ctl { formula } => format!("ctl {n}: {};", self.formula(formula)),
+            PropertyKind::Nonblocking { expr } => {
+                format!("nonblocking {n}: {};", self.expr(expr))
+            }
+            PropertyKind::Fair { trigger, expr } => match trigger {
+                Some(t) => format!("fair {n}: {} => {};", self.expr(t), self.expr(expr)),
+                None => format!("fair {n}: {};", self.expr(expr)),
+            },
+        }
+    }
+
+    /// A temporal formula, parenthesised wherever the parser's grouping needs it: an atom
+    /// whose expression is an `&&`/`||` (the parser reads a parenthesised group without
+    /// temporal operators as one atom), and every compound operand.
+    fn formula(&self, f: &Formula) -> String {
+        match f {
+            Formula::Atom(e) => {
+                let text = self.expr(e);
+                if matches!(e, Expr::Binary(BinOp::And | BinOp::Or, ..)) {
+                    format!("({text})")
+                } else {
+                    text
+                }
+            }
+            Formula::Not(a, _) => format!("!{}", self.operand(a)),
+            Formula::And(a, b, _) => format!("{} && {}", self.operand(a), self.operand(b)),
+            Formula::Or(a, b, _) => format!("{} || {}", self.operand(a), self.operand(b)),
+            Formula::Implies(a, b, _) => format!("{} => {}", self.operand(a), self.formula(b)),
+            Formula::Unary(op, a, _) => format!("{} {}", op.as_str(), self.operand(a)),
+            Formula::Binary(op, a, b, _) => {
+                format!("{} {} {}", self.operand(a), op.as_str(), self.operand(b))
+            }
+            Formula::QuantUntil(q, a, b, _) => {
+                let q = match q {
+                    Quant::All => "A",
+                    Quant::Exists => "E",
+                };
+                format!("{q}[{} U {}]", self.formula(a), self.formula(b))
+            }
+        }
+    }
+
+    /// A formula in operand position: atoms, prefix operators and quantified untils as they
+    /// are, anything else in parentheses.
+    fn operand(&self, f: &Formula) -> String {
+        match f {
+            Formula::Atom(_) | Formula::Not(..) | Formula::Unary(..) | Formula::QuantUntil(..) => {
+                self.formula(f)
+            }
+            _ => format!("({})", self.formula(f)),
         }
     }
 }

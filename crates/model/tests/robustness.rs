@@ -1,0 +1,94 @@
+//! Regression tests for inputs that once crashed or stalled the checker (issue 20), each named
+//! after what it guards. Every test parses and checks a model built in the test and asserts
+//! the diagnostics it must give; none of them may panic.
+
+use statecheck_base::Diagnostic;
+
+/// Parse and check `src`; the error codes with their 1-based line, in order.
+fn errors(src: &str) -> Vec<(&'static str, usize)> {
+    let (file, parse) = statecheck_syntax::parse(src);
+    assert!(parse.is_empty(), "parse diagnostics: {parse:#?}");
+    let (_, diags) = statecheck_model::check(&file);
+    let index = statecheck_base::LineIndex::new(src);
+    diags
+        .iter()
+        .filter(|d| d.is_error())
+        .map(|d: &Diagnostic| (d.code, index.line_col(d.span.start).0))
+        .collect()
+}
+
+#[test]
+fn constant_min_divided_by_minus_one_is_a_constant_error_not_a_panic() {
+    // i64::MIN / -1 = 2^63, which has no 64-bit value: E0104 ("this constant expression fails").
+    assert_eq!(
+        errors("const C = (-9223372036854775807 - 1) / -1;\n"),
+        [("E0104", 1)]
+    );
+    // abs(i64::MIN) = 2^63 likewise.
+    assert_eq!(
+        errors("const D = abs(-9223372036854775807 - 1);\n"),
+        [("E0104", 1)]
+    );
+}
+
+#[test]
+fn division_bounds_of_an_input_reaching_i64_min_do_not_overflow() {
+    // `i / -1` over i in [i64::MIN, 0] is [0, 2^63]; its bound saturates and the division is
+    // checked at run time, so the model is valid.
+    let src = "chart M {
+  input i: int[-9223372036854775807 - 1..0] = 0;
+  output o: int[-10..10] = 0;
+  output p: int[0..10] = 0;
+  initial S;
+  state S { during { o = min(i / -1, 1); p = min(abs(i), 1); } }
+}
+";
+    assert_eq!(errors(src), []);
+}
+
+/// A chart whose state `S` has a transition into a chain of `n` junctions, the last one
+/// leading to `T`; with `fan`, every junction reaches the next by two branches.
+fn junction_chain(n: usize, fan: bool) -> String {
+    let mut s = String::from("chart J {\n  input x: int[0..9] = 0;\n  initial S;\n  state S {\n");
+    s.push_str("    on [x > 0] -> j0;\n");
+    for k in 0..n {
+        let next = if k + 1 == n {
+            "T".to_string()
+        } else {
+            format!("j{}", k + 1)
+        };
+        if fan {
+            s.push_str(&format!(
+                "    junction j{k} {{ [x > 1] -> {next}; else -> {next}; }}\n"
+            ));
+        } else {
+            s.push_str(&format!("    junction j{k} {{ [x > 0] -> {next}; }}\n"));
+        }
+    }
+    s.push_str("  }\n  state T;\n}\n");
+    s
+}
+
+#[test]
+fn long_junction_chain_is_a_diagnostic_not_a_stack_overflow() {
+    // 6,000 chained junctions once overflowed the stack. The path from `S` passes j0..j99
+    // (100 junctions, the limit) and is stopped at the reference to j100 on line 105
+    // (line 5 holds `on ... -> j0`, junction jk is on line 6 + k).
+    let errs = errors(&junction_chain(6000, false));
+    assert_eq!(errs, [("E0124", 105)]);
+    // A chain of exactly 100 junctions is accepted.
+    assert_eq!(errors(&junction_chain(100, false)), []);
+}
+
+#[test]
+fn junctions_reached_by_many_paths_do_not_expand_exponentially() {
+    // 30 junctions with two branches each to the next: 2^30 paths. The expansion budget
+    // (10,000 junctions per transition) stops it with one diagnostic instead of running out
+    // of memory.
+    let errs = errors(&junction_chain(30, true));
+    assert!(
+        !errs.is_empty() && errs.iter().all(|e| e.0 == "E0124"),
+        "{errs:?}"
+    );
+    assert_eq!(errs.len(), 1);
+}

@@ -1,0 +1,51 @@
+//! Deciding one AIGER circuit (`statecheck verify FILE.aig`): one SAT engine, or IC3,
+//! k-induction and BMC side by side.
+
+use statecheck_symbolic::aig::Aig;
+use statecheck_symbolic::check::{run_reduced, Engine, Reductions};
+use statecheck_symbolic::engine::{Limits, Outcome};
+use std::sync::atomic::{AtomicBool, Ordering};
+use std::sync::{mpsc, Arc};
+
+/// The symbolic engines raced on a circuit and in [`crate::Engine::Auto`]: IC3 for proofs,
+/// k-induction for proofs whose invariant is "no bad state within k ticks", BMC for deep
+/// counterexamples.
+pub(crate) const SYMBOLIC_RACE: [Engine; 3] = [Engine::Ic3, Engine::Kind, Engine::Bmc];
+
+/// Decide the single bad output of `g` with `engine` (with signal-correspondence reduction
+/// where it pays).
+pub fn decide_circuit(engine: Engine, g: &Aig, lim: &Limits) -> Outcome {
+    run_reduced(engine, g, 0, &Reductions::new(1), lim)
+}
+
+/// IC3, k-induction and BMC side by side on one circuit; the first definitive answer, with
+/// the engine that gave it.
+pub fn race(g: &Aig, lim: &Limits) -> (Outcome, &'static str) {
+    let stop = Arc::new(AtomicBool::new(false));
+    let mut l = lim.clone();
+    l.stop = Some(Arc::clone(&stop));
+    let reductions = Reductions::new(1);
+    std::thread::scope(|s| {
+        let (tx, rx) = mpsc::channel();
+        for e in SYMBOLIC_RACE {
+            let tx = tx.clone();
+            let l = l.clone();
+            let reductions = &reductions;
+            s.spawn(move || {
+                let _ = tx.send((run_reduced(e, g, 0, reductions, &l), e.as_str()));
+            });
+        }
+        drop(tx);
+        let mut last = (Outcome::Unknown("no engine answered".into()), "ic3");
+        for (o, e) in rx.iter() {
+            let def = matches!(o, Outcome::Reached(_) | Outcome::Proved(_));
+            last = (o, e);
+            if def {
+                stop.store(true, Ordering::Relaxed);
+                break;
+            }
+        }
+        stop.store(true, Ordering::Relaxed);
+        last
+    })
+}

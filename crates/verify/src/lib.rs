@@ -1,0 +1,131 @@
+//! The verification portfolio: one entry point, [`verify`], that the CLI and the web studio
+//! call to decide a program's properties with one engine or several side by side.
+//!
+//! The engines themselves (`statecheck-explicit`, `statecheck-symbolic`) know nothing of each
+//! other; this crate races them ([`Engine::Auto`]), gives each property its budget, cancels the
+//! engines that lost, and reports every verdict through the caller's [`Event`] callback the
+//! moment it is decided, before the run ends.
+
+mod circuit;
+mod error;
+mod portfolio;
+mod priority;
+mod single;
+
+pub use circuit::{decide_circuit, race};
+pub use error::{Error, ErrorKind};
+pub use statecheck_explicit::{Options as ExplicitOptions, Progress, Report, Stats};
+pub use statecheck_ir::verdict::{PropKind, PropResult, Verdict};
+
+use statecheck_ir::Program;
+use statecheck_symbolic::aig::Aig;
+use statecheck_symbolic::engine::Invariant;
+
+/// The depth bound of [`Engine::Bmc`] without a depth option.
+pub const DEFAULT_BMC_DEPTH: u64 = 100;
+
+/// Which engine decides the properties.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Engine {
+    /// Explicit-state breadth-first search.
+    Explicit,
+    /// Bounded model checking (shortest counterexamples; no proofs).
+    Bmc,
+    /// k-induction with simple-path constraints.
+    Kind,
+    /// IC3/PDR (proofs with an inductive invariant).
+    Ic3,
+    /// Explicit and SAT engines side by side; the first definitive verdict wins.
+    Auto,
+}
+
+impl Engine {
+    /// The option word and the `engine` field of a result.
+    pub fn as_str(self) -> &'static str {
+        match self {
+            Engine::Explicit => "explicit",
+            Engine::Bmc => "bmc",
+            Engine::Kind => "kind",
+            Engine::Ic3 => "ic3",
+            Engine::Auto => "auto",
+        }
+    }
+
+    /// The SAT engine, for the three that are one.
+    pub fn symbolic(self) -> Option<statecheck_symbolic::check::Engine> {
+        use statecheck_symbolic::check::Engine as S;
+        match self {
+            Engine::Bmc => Some(S::Bmc),
+            Engine::Kind => Some(S::Kind),
+            Engine::Ic3 => Some(S::Ic3),
+            Engine::Explicit | Engine::Auto => None,
+        }
+    }
+}
+
+/// Options of a run.
+#[derive(Clone, Debug)]
+pub struct Options {
+    /// The engine.
+    pub engine: Engine,
+    /// Properties, limits and threads (the explicit engine's options; the SAT engines read
+    /// the properties, depth and timeout).
+    pub check: ExplicitOptions,
+}
+
+/// Which engine decided a result, how long it took, and why it is `unknown`.
+#[derive(Clone, Debug, Default)]
+pub struct Meta {
+    /// `explicit`, `bmc`, `kind`, `ic3`, or `auto` when no engine answered.
+    pub engine: &'static str,
+    /// Seconds spent on this property (`None`: the explicit engine's run time, shared by all).
+    pub time_s: Option<f64>,
+    /// Why the verdict is `unknown`.
+    pub reason: Option<String>,
+    /// With [`Engine::Auto`]: seconds from the start of the run to the verdict (the engines
+    /// run side by side, so this, not `time_s`, is when the user had the answer).
+    pub decided_at_s: Option<f64>,
+}
+
+/// Something that happened during a run, reported as it happens.
+#[derive(Debug)]
+pub enum Event<'a> {
+    /// Property `index` (of the run's selection, in report order) is decided: definitive, or
+    /// final for its engine.
+    Decided {
+        /// Index into the run's results.
+        index: usize,
+        /// The result.
+        result: &'a PropResult,
+        /// Its engine and times.
+        meta: &'a Meta,
+    },
+    /// The explicit engine's exploration progressed.
+    Progress(&'a Progress),
+}
+
+/// The outcome of [`verify`].
+#[derive(Clone, Debug)]
+pub struct Run {
+    /// One result per selected property (report order) and the statistics (the explicit
+    /// engine's when it ran to the end, else the program's sizes only).
+    pub report: Report,
+    /// Engine, time and reason per result.
+    pub meta: Vec<Meta>,
+    /// IC3 invariants per result, with their circuits.
+    pub invariants: Vec<Option<(Aig, Invariant)>>,
+}
+
+/// Decide the selected properties of `program` as `opts` says, calling `events` as verdicts
+/// are decided and as the exploration progresses (from any thread).
+pub fn verify(
+    program: &Program,
+    opts: &Options,
+    events: &(dyn Fn(Event) + Sync),
+) -> Result<Run, Error> {
+    match (opts.engine, opts.engine.symbolic()) {
+        (_, Some(e)) => single::run_engine(program, &opts.check, e, events),
+        (Engine::Auto, None) => portfolio::run_auto(program, &opts.check, events),
+        _ => single::run_explicit(program, &opts.check, events),
+    }
+}
