@@ -231,7 +231,7 @@ pub fn parse(text: &str, program: &Program) -> Result<Scenario, Vec<ScenarioErro
     if errors.is_empty() {
         if loop_start.is_some_and(|k| k == 0 || k >= ticks.len()) {
             return Err(vec![ScenarioError {
-                code: "E0811",
+                code: "E0810",
                 line: 1,
                 col: 1,
                 len: 1,
