@@ -12,11 +12,12 @@ BIN=${1:-}
 LIMIT=${LIMIT:-60}
 VERIFY_MAX=${VERIFY_MAX:-100000}
 if [ -z "$BIN" ]; then
-    cargo build --release -q -p statecheck-cli -p statecheck-synth --examples || exit 2
+    cargo build --release -q -p statecheck-cli || exit 2
     BIN=${CARGO_TARGET_DIR:-target}/release/statecheck
 fi
-GEN=$(dirname "$BIN")/examples/gen_families
-[ -x "$GEN" ] || cargo build --release -q -p statecheck-synth --example gen_families || exit 2
+# The instance generator (crates/synth/examples/gen_families.rs).
+cargo build --release -q -p statecheck-synth --example gen_families || exit 2
+GEN=${CARGO_TARGET_DIR:-target}/release/examples/gen_families
 TMP=$(mktemp -d)
 trap 'rm -rf "$TMP"' EXIT
 TIME=/usr/bin/time
@@ -35,10 +36,11 @@ run() {
         "$BIN" synth -q --engine "$engine" --timeout "$LIMIT" "${sys[@]}" "$file" -o "$out" >"$TMP/o" 2>&1
         echo "0 0 0" >"$TMP/t"
     fi
-    local code=$? line cpu mem
+    local line cpu mem u s m
     line=$(tail -1 "$TMP/o")
-    read -r u s m <"$TMP/t"
-    cpu=$(echo "$u + $s" | bc 2>/dev/null || echo "$u")
+    # time(1) adds "Command exited with non-zero status N" first when the exit code is not 0.
+    read -r u s m < <(tail -1 "$TMP/t")
+    cpu=$(awk "BEGIN { printf \"%.2f\", $u + $s }")
     mem=$((m / 1024))
     printf '%-28s %-9s cpu %7ss %6s MB  %s' "$label" "$engine" "$cpu" "$mem" "$line"
     local states
@@ -78,6 +80,13 @@ for family in philosophers line; do
             run "${family}_$n" "$engine" "$f" || eval "$var=0"
         done
         if [ "$family" = philosophers ] && [ $alive_reference = 1 ]; then
+            # The explicit engine as the reference runs: no guards, no output file.
+            if [ -n "$TIME" ]; then
+                $TIME -f "%U %S %M" -o "$TMP/t" "$BIN" synth -q --engine explicit --timeout "$LIMIT" "$f" >"$TMP/o" 2>&1
+                read -r u s m < <(tail -1 "$TMP/t")
+                printf '%-28s %-9s cpu %7ss %6s MB  %s\n' "${family}_$n" "expl. -q" \
+                    "$(awk "BEGIN { printf \"%.2f\", $u + $s }")" $((m / 1024)) "$(tail -1 "$TMP/o")"
+            fi
             t0=$(date +%s)
             ref=$(timeout "$LIMIT" python3 examples/synthesis/reference.py "$family" "$n")
             [ -n "$ref" ] && printf '%-28s %-9s %s\n' "${family}_$n" reference "$ref"
