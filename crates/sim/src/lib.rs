@@ -9,5 +9,8 @@ pub mod random;
 pub mod run;
 pub mod scenario;
 
-pub use run::{run, InputSource, Options, Run, ScenarioInputs, Stop, TickRecord};
-pub use scenario::{Scenario, ScenarioError};
+pub use run::{
+    run, run_streaming, tick_once, unreached, InputSource, NoInput, Options, Run, ScenarioInputs,
+    Sink, Stop, TickRecord,
+};
+pub use scenario::{Scenario, ScenarioError, ScenarioWriter};

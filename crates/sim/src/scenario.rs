@@ -26,6 +26,8 @@ pub struct Scenario {
 /// A problem in a scenario file.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct ScenarioError {
+    /// The stable diagnostic code (E08xx, `statecheck explain`).
+    pub code: &'static str,
     /// 1-based line.
     pub line: usize,
     /// 1-based column.
@@ -55,6 +57,7 @@ pub fn parse(text: &str, program: &Program) -> Result<Scenario, Vec<ScenarioErro
         if content.trim() == "loop:" {
             if loop_start.is_some() {
                 errors.push(ScenarioError {
+                    code: "E0810",
                     line: line_no,
                     col: 1,
                     len: raw.len().max(1),
@@ -65,13 +68,17 @@ pub fn parse(text: &str, program: &Program) -> Result<Scenario, Vec<ScenarioErro
             loop_start = Some(ticks.len());
             continue;
         }
-        let err = |col: usize, len: usize, message: String, hint: Option<String>| ScenarioError {
-            line: line_no,
-            col: col + 1,
-            len: len.max(1),
-            message,
-            hint,
-        };
+        let err =
+            |code: &'static str, col: usize, len: usize, message: String, hint: Option<String>| {
+                ScenarioError {
+                    code,
+                    line: line_no,
+                    col: col + 1,
+                    len: len.max(1),
+                    message,
+                    hint,
+                }
+            };
         // `* N` repeat suffix.
         let (body, repeat) = match content.rfind('*') {
             Some(star) => {
@@ -80,6 +87,7 @@ pub fn parse(text: &str, program: &Program) -> Result<Scenario, Vec<ScenarioErro
                     Ok(n) if n >= 1 => (&content[..star], n),
                     _ => {
                         errors.push(err(
+                            "E0801",
                             star,
                             content.len() - star,
                             format!("bad repeat count `{n_text}`"),
@@ -101,6 +109,7 @@ pub fn parse(text: &str, program: &Program) -> Result<Scenario, Vec<ScenarioErro
                 let item_t = item.trim();
                 if item_t.is_empty() {
                     errors.push(err(
+                        "E0802",
                         start,
                         1,
                         "empty item".into(),
@@ -114,8 +123,8 @@ pub fn parse(text: &str, program: &Program) -> Result<Scenario, Vec<ScenarioErro
                 };
                 let idx = match resolve(program, name) {
                     Ok(i) => i,
-                    Err((msg, hint)) => {
-                        errors.push(err(start, name.len(), msg, hint));
+                    Err((code, msg, hint)) => {
+                        errors.push(err(code, start, name.len(), msg, hint));
                         continue;
                     }
                 };
@@ -123,21 +132,22 @@ pub fn parse(text: &str, program: &Program) -> Result<Scenario, Vec<ScenarioErro
                 let slot = &program.slots[input.slot as usize];
                 let v = match (value, input.is_event) {
                     (None, true) => 1,
-                    (Some(v), true) => match v {
-                        "true" | "1" => 1,
-                        "false" | "0" => 0,
-                        _ => {
-                            errors.push(err(
-                                start,
-                                item_t.len(),
-                                format!("event `{}` is present or absent, not `{v}`", input.name),
-                                Some(format!("write just `{name}` to make it present",)),
-                            ));
-                            continue;
-                        }
-                    },
+                    (Some(v), true) => {
+                        // An event is present or absent: it takes no value, not even `true`.
+                        errors.push(err(
+                            "E0805",
+                            start,
+                            item_t.len(),
+                            format!("event `{}` takes no value, found `{v}`", input.name),
+                            Some(format!(
+                                "write just `{name}` to make it present in this tick, or leave it out"
+                            )),
+                        ));
+                        continue;
+                    }
                     (None, false) => {
                         errors.push(err(
+                            "E0806",
                             start,
                             name.len(),
                             format!("`{}` is not an event; give it a value", input.name),
@@ -145,10 +155,29 @@ pub fn parse(text: &str, program: &Program) -> Result<Scenario, Vec<ScenarioErro
                         ));
                         continue;
                     }
+                    // A bool takes `true` or `false`, not a number (the IR's parser, which
+                    // also reads traces, accepts `1` and `0`).
+                    (Some(v), false)
+                        if matches!(slot.display, statecheck_ir::ValueKind::Bool)
+                            && !matches!(v, "true" | "false") =>
+                    {
+                        errors.push(err(
+                            "E0808",
+                            start,
+                            item_t.len(),
+                            format!("`{}` is a `bool`, found `{v}`", input.name),
+                            Some(match suggest(v, vec!["true", "false"]) {
+                                Some(s) => format!("did you mean `{s}`?"),
+                                None => "`true` or `false`".into(),
+                            }),
+                        ));
+                        continue;
+                    }
                     (Some(v), false) => match slot.display.parse(v) {
                         Some(x) if x >= slot.lo && x <= slot.hi => x,
                         Some(x) => {
                             errors.push(err(
+                                "E0807",
                                 start,
                                 item_t.len(),
                                 format!(
@@ -167,7 +196,12 @@ pub fn parse(text: &str, program: &Program) -> Result<Scenario, Vec<ScenarioErro
                                 statecheck_ir::ValueKind::Bool => "`true` or `false`".into(),
                                 statecheck_ir::ValueKind::Int => "an integer".into(),
                             };
+                            let hint = match suggest(v, slot_names(&slot.display)) {
+                                Some(s) => format!("did you mean `{s}`?"),
+                                None => hint,
+                            };
                             errors.push(err(
+                                "E0808",
                                 start,
                                 item_t.len(),
                                 format!("`{v}` is not a value of `{}`", input.name),
@@ -182,6 +216,7 @@ pub fn parse(text: &str, program: &Program) -> Result<Scenario, Vec<ScenarioErro
         }
         if ticks.len().saturating_add(repeat) > MAX_TICKS {
             errors.push(err(
+                "E0809",
                 0,
                 content.len(),
                 format!("the scenario would exceed {MAX_TICKS} ticks"),
@@ -196,6 +231,7 @@ pub fn parse(text: &str, program: &Program) -> Result<Scenario, Vec<ScenarioErro
     if errors.is_empty() {
         if loop_start.is_some_and(|k| k == 0 || k >= ticks.len()) {
             return Err(vec![ScenarioError {
+                code: "E0810",
                 line: 1,
                 col: 1,
                 len: 1,
@@ -212,7 +248,7 @@ pub fn parse(text: &str, program: &Program) -> Result<Scenario, Vec<ScenarioErro
 }
 
 /// Find an input by `instance.var` or by an unambiguous bare `var`.
-fn resolve(program: &Program, name: &str) -> Result<usize, (String, Option<String>)> {
+fn resolve(program: &Program, name: &str) -> Result<usize, (&'static str, String, Option<String>)> {
     if let Some(i) = program.inputs.iter().position(|inp| inp.name == name) {
         return Ok(i);
     }
@@ -231,16 +267,24 @@ fn resolve(program: &Program, name: &str) -> Result<usize, (String, Option<Strin
                 .slots
                 .iter()
                 .any(|s| s.name == name || s.name.rsplit('.').next() == Some(name));
-            let hint = if is_var {
+            let names: Vec<&str> = program
+                .inputs
+                .iter()
+                .flat_map(|i| [i.name.as_str(), i.name.rsplit('.').next().unwrap_or("")])
+                .collect();
+            let hint = if let Some(s) = suggest(name, names).filter(|_| !is_var) {
+                Some(format!("did you mean `{s}`?"))
+            } else if is_var {
                 Some(format!("`{name}` is not a free input (it is computed or connected); the free inputs are: {}", known.join(", ")))
             } else if known.is_empty() {
                 Some("this system has no free inputs".into())
             } else {
                 Some(format!("the free inputs are: {}", known.join(", ")))
             };
-            Err((format!("unknown input `{name}`"), hint))
+            Err(("E0803", format!("unknown input `{name}`"), hint))
         }
         many => Err((
+            "E0804",
             format!("`{name}` is ambiguous"),
             Some(format!(
                 "qualify it: {}",
@@ -253,61 +297,166 @@ fn resolve(program: &Program, name: &str) -> Result<usize, (String, Option<Strin
     }
 }
 
+/// The literal names of an enum display (none for other kinds).
+fn slot_names(d: &statecheck_ir::ValueKind) -> Vec<&str> {
+    match d {
+        statecheck_ir::ValueKind::Enum(names) => names.iter().map(String::as_str).collect(),
+        _ => Vec::new(),
+    }
+}
+
+/// The candidate closest to `word` when it is close enough to be a likely misspelling
+/// (edit distance at most 1 for words of up to three characters, 2 for longer ones).
+fn suggest<'c>(word: &str, candidates: Vec<&'c str>) -> Option<&'c str> {
+    let limit = if word.chars().count() >= 4 { 2 } else { 1 };
+    candidates
+        .into_iter()
+        .filter(|c| !c.is_empty() && *c != word)
+        .map(|c| (edit_distance(word, c), c))
+        .filter(|(d, _)| *d <= limit)
+        .min_by_key(|(d, c)| (*d, *c))
+        .map(|(_, c)| c)
+}
+
+/// Levenshtein distance over characters.
+fn edit_distance(a: &str, b: &str) -> usize {
+    let b: Vec<char> = b.chars().collect();
+    let mut prev: Vec<usize> = (0..=b.len()).collect();
+    for (i, ca) in a.chars().enumerate() {
+        let mut cur = vec![i + 1];
+        for (j, cb) in b.iter().enumerate() {
+            let sub = prev[j] + usize::from(ca != *cb);
+            cur.push(sub.min(prev[j + 1] + 1).min(cur[j] + 1));
+        }
+        prev = cur;
+    }
+    prev[b.len()]
+}
+/// The header line of a scenario file.
+const HEADER: &str =
+    "# statecheck scenario: one line per tick; `name = value` holds, bare names are events\n";
+
 /// Write a scenario in the canonical format: qualified names, held inputs written only when
 /// they change, identical consecutive lines folded into `* N`.
 pub fn format(s: &Scenario, program: &Program) -> String {
-    let mut out = String::from(
-        "# statecheck scenario: one line per tick; `name = value` holds, bare names are events\n",
-    );
-    let mut lines: Vec<String> = Vec::with_capacity(s.ticks.len());
-    for tick in &s.ticks {
+    let mut w = ScenarioWriter::new(program);
+    let mut out = w.header().to_string();
+    for (i, tick) in s.ticks.iter().enumerate() {
+        if s.loop_start == Some(i) {
+            out.push_str(&w.mark_loop());
+        }
+        out.push_str(&w.push_changes(tick));
+    }
+    out.push_str(&w.finish());
+    out
+}
+
+/// A scenario written tick by tick, in the canonical format of [`format`], holding only the
+/// pending line (for folding repeats) and the held inputs: constant memory for any length.
+pub struct ScenarioWriter<'p> {
+    program: &'p Program,
+    held: Vec<i64>,
+    /// The last line, not yet written, how many ticks it stands for, and whether repeats
+    /// of it fold.
+    pending: Option<(String, u64, bool)>,
+}
+
+impl<'p> ScenarioWriter<'p> {
+    /// A writer for scenarios of `program`.
+    pub fn new(program: &'p Program) -> Self {
+        ScenarioWriter {
+            program,
+            held: program
+                .inputs
+                .iter()
+                .map(|i| program.slots[i.slot as usize].init)
+                .collect(),
+            pending: None,
+        }
+    }
+
+    /// The file's header line.
+    pub fn header(&self) -> &'static str {
+        HEADER
+    }
+
+    /// The next tick, as a full input vector (in `Program::inputs` order); returns the text
+    /// that is complete (possibly empty).
+    pub fn push_vector(&mut self, vector: &[i64]) -> String {
+        let changes = changes(self.program, &mut self.held, vector);
+        self.push_changes(&changes)
+    }
+
+    /// The next tick, as its changes (input index, value).
+    pub fn push_changes(&mut self, tick: &[(usize, i64)]) -> String {
+        let p = self.program;
         let items: Vec<String> = tick
             .iter()
             .map(|(i, v)| {
-                let inp = &program.inputs[*i];
+                let inp = &p.inputs[*i];
                 if inp.is_event {
                     inp.name.clone()
                 } else {
                     format!(
                         "{} = {}",
                         inp.name,
-                        program.slots[inp.slot as usize].display.format(*v)
+                        p.slots[inp.slot as usize].display.format(*v)
                     )
                 }
             })
             .collect();
-        lines.push(if items.is_empty() {
-            "-".into()
+        let line = if items.is_empty() {
+            "-".to_string()
         } else {
             items.join(", ")
-        });
-    }
-    let mut i = 0;
-    while i < lines.len() {
-        if s.loop_start == Some(i) {
-            out.push_str("loop:\n");
-        }
-        let mut j = i + 1;
-        // A fold never crosses the loop's start.
-        let stop = match s.loop_start {
-            Some(k) if k > i => k,
-            _ => lines.len(),
         };
-        // Only fold lines that are pure repeats: event lines, or `-`.
-        let foldable =
-            lines[i] == "-" || s.ticks[i].iter().all(|(k, _)| program.inputs[*k].is_event);
-        while foldable && j < stop && lines[j] == lines[i] {
-            j += 1;
+        // Only lines that are pure repeats fold: event lines, or `-`.
+        let foldable = tick.iter().all(|(k, _)| p.inputs[*k].is_event);
+        if let Some((last, n, true)) = &mut self.pending {
+            if *last == line {
+                *n += 1;
+                return String::new();
+            }
         }
-        if j - i > 1 {
-            out.push_str(&format!("{} * {}\n", lines[i], j - i));
-        } else {
-            out.push_str(&lines[i]);
-            out.push('\n');
-        }
-        i = j;
+        let done = self.finish();
+        self.pending = Some((line, 1, foldable));
+        done
     }
-    out
+
+    /// Mark the start of a lasso's loop before the next tick: the pending line is written
+    /// (a fold never crosses the loop's start), then `loop:`.
+    pub fn mark_loop(&mut self) -> String {
+        let mut done = self.finish();
+        done.push_str("loop:\n");
+        done
+    }
+
+    /// The text of the pending line (call once after the last tick).
+    pub fn finish(&mut self) -> String {
+        match self.pending.take() {
+            Some((line, n, _)) if n > 1 => format!("{line} * {n}\n"),
+            Some((line, _, _)) => format!("{line}\n"),
+            None => String::new(),
+        }
+    }
+}
+
+/// The changes of one full input vector against the held values (updated): the present
+/// events and the held inputs whose value changed.
+fn changes(program: &Program, held: &mut [i64], vector: &[i64]) -> Vec<(usize, i64)> {
+    let mut changes = Vec::new();
+    for (k, inp) in program.inputs.iter().enumerate() {
+        let v = vector[k];
+        if inp.is_event {
+            if v != 0 {
+                changes.push((k, 1));
+            }
+        } else if v != held[k] {
+            held[k] = v;
+            changes.push((k, v));
+        }
+    }
+    changes
 }
 
 /// Build a scenario from full input vectors (one per tick, in `Program::inputs` order),
@@ -320,21 +469,7 @@ pub fn from_input_vectors(program: &Program, vectors: &[Vec<i64>]) -> Scenario {
         .collect();
     let ticks = vectors
         .iter()
-        .map(|vec| {
-            let mut changes = Vec::new();
-            for (k, inp) in program.inputs.iter().enumerate() {
-                let v = vec[k];
-                if inp.is_event {
-                    if v != 0 {
-                        changes.push((k, 1));
-                    }
-                } else if v != held[k] {
-                    held[k] = v;
-                    changes.push((k, v));
-                }
-            }
-            changes
-        })
+        .map(|vec| changes(program, &mut held, vec))
         .collect();
     Scenario {
         ticks,
