@@ -168,3 +168,49 @@ fn a_scenario_that_is_not_a_lasso_is_refused() {
             || String::from_utf8_lossy(&sim.stderr).contains("reaches3")
     );
 }
+
+/// examples/linear_drive/liveness/linear_drive_live.sc: its charts are linear_drive.sc's, verbatim;
+/// after Run the drive reaches both ends unless Halt comes (§2.1, Modelica paper), and the
+/// property without the Halt escape is violated (Run, then Halt).
+#[test]
+fn linear_drive_liveness() {
+    let root = format!("{}/../..", env!("CARGO_MANIFEST_DIR"));
+    let live = std::fs::read_to_string(format!(
+        "{root}/examples/linear_drive/liveness/linear_drive_live.sc"
+    ))
+    .expect("example");
+    let orig = std::fs::read_to_string(format!("{root}/examples/linear_drive/linear_drive.sc"))
+        .expect("example");
+    let begin = "// === begin copy of linear_drive.sc ===\n";
+    let end = "// === end copy of linear_drive.sc ===\n";
+    let a = live.find(begin).expect("begin marker") + begin.len();
+    let b = live.find(end).expect("end marker");
+    assert!(
+        orig.starts_with(&live[a..b]),
+        "the copied charts differ from linear_drive.sc"
+    );
+    let out = Command::new(BIN)
+        .args([
+            "verify",
+            &format!("{root}/examples/linear_drive/liveness/linear_drive_live.sc"),
+            "--json",
+        ])
+        .output()
+        .expect("statecheck runs");
+    let v: Value = serde_json::from_slice(&out.stdout).expect("JSON");
+    let verdict = |n: &str| {
+        v["results"]
+            .as_array()
+            .and_then(|a| a.iter().find(|r| r["property"] == n))
+            .map(|r| r["verdict"].as_str().unwrap_or("").to_string())
+    };
+    assert_eq!(verdict("run_reaches_left").as_deref(), Some("proved"));
+    assert_eq!(verdict("run_reaches_right").as_deref(), Some("proved"));
+    assert_eq!(
+        verdict("run_reaches_left_always").as_deref(),
+        Some("violated")
+    );
+    assert_eq!(verdict("can_stop").as_deref(), Some("proved"));
+    assert_eq!(verdict("can_run").as_deref(), Some("proved"));
+    assert_eq!(verdict("deadlock_free").as_deref(), Some("proved"));
+}

@@ -23,6 +23,11 @@ pub struct LassoRun {
 
 /// Replay `sc`, whose `loop_start` is set.
 pub fn run_lasso(program: &Program, sc: &Scenario, opts: Options) -> LassoRun {
+    // The replay compares states and evaluates formulas on the trace: it is always recorded.
+    let opts = Options {
+        no_trace: false,
+        ..opts
+    };
     let first = run(program, &mut ScenarioInputs::new(sc), opts);
     let k = sc.loop_start.unwrap_or(0);
     let t = sc.ticks.len();
