@@ -59,8 +59,13 @@ fn clamp(r: std::ops::Range<usize>, len: usize) -> std::ops::Range<usize> {
     s..r.end.clamp(s, len)
 }
 
-/// Print diagnostics to stderr, in color on a terminal.
+/// Print diagnostics to stderr, in color on a terminal (as JSON lines with
+/// `--message-format json`).
 pub fn eprint(path: &str, source: &str, diags: &[Diagnostic]) {
+    if crate::diag_json::is_json() {
+        eprint!("{}", crate::diag_json::render(path, source, diags));
+        return;
+    }
     let color = std::io::stderr().is_terminal() && std::env::var_os("NO_COLOR").is_none();
     eprint!("{}", render(path, source, diags, color));
 }

@@ -5,10 +5,13 @@
 //! (0 ok, 1 model or run-time error, 2 usage error, 4 a property was violated in a run).
 
 mod diag;
+mod diag_json;
 mod export_cmd;
+mod fmt_cmd;
 mod gen_cmd;
 mod load;
 mod output;
+mod serve_cmd;
 mod sim_cmd;
 mod sim_sink;
 mod synth_cmd;
@@ -24,6 +27,19 @@ use std::process::ExitCode;
 struct Cli {
     #[command(subcommand)]
     command: Command,
+    /// How diagnostics are printed on standard error: `human` (rendered, the default) or
+    /// `json` (one JSON object per line; docs/tools.md).
+    #[arg(long, global = true, value_enum, default_value_t = MessageFormat::Human)]
+    message_format: MessageFormat,
+}
+
+/// The values of `--message-format`.
+#[derive(Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+enum MessageFormat {
+    /// Rendered for people.
+    Human,
+    /// One JSON object per diagnostic and line.
+    Json,
 }
 
 #[derive(Subcommand)]
@@ -52,6 +68,12 @@ enum Command {
     Export(export_cmd::ExportCommand),
     /// Synthesize a maximally permissive, controllable, nonblocking supervisor.
     Synth(synth_cmd::SynthArgs),
+    /// Serve the validation studio: a local web page that animates the charts.
+    Serve(serve_cmd::ServeArgs),
+    /// Rewrite model files in the canonical layout (`--check`: only report).
+    Fmt(fmt_cmd::FmtArgs),
+    /// Run the language server on standard input and output (for editors; docs/tools.md).
+    Lsp,
     /// Draw a system's charts as Graphviz DOT, optionally with coverage counts.
     Dot {
         /// The `.sc` model file.
@@ -98,6 +120,7 @@ fn main() -> ExitCode {
 }
 
 fn run(cli: Cli) -> Result<u8> {
+    diag_json::set_json(cli.message_format == MessageFormat::Json);
     match cli.command {
         Command::Check { model } => {
             let loaded = load::load(&model, true)?;
@@ -124,6 +147,12 @@ fn run(cli: Cli) -> Result<u8> {
         Command::Gen(args) => gen_cmd::run(args),
         Command::Export(c) => export_cmd::run(c),
         Command::Synth(args) => synth_cmd::run(args),
+        Command::Serve(args) => serve_cmd::run(args),
+        Command::Fmt(args) => fmt_cmd::run(args),
+        Command::Lsp => {
+            statecheck_lsp::serve_stdio()?;
+            Ok(0)
+        }
         Command::Dot {
             model,
             system,

@@ -8,7 +8,9 @@ use anyhow::{bail, Result};
 use clap::Args;
 use statecheck_base::LineIndex;
 use statecheck_ir::view::TraceView as Views;
-use statecheck_sim::{random::RandomInputs, scenario, NoInput, Options, ScenarioInputs, Stop};
+use statecheck_sim::{
+    random::RandomInputs, scenario, NoInput, Options, ScenarioInputs, Sink, Stop,
+};
 
 /// Arguments of `statecheck sim`.
 #[derive(Args)]
@@ -24,6 +26,10 @@ pub struct SimArgs {
     /// Run N ticks of random inputs within their types and the `assume`s.
     #[arg(long, value_name = "N")]
     random: Option<u64>,
+    /// With --random: make a boolean input or event be true/present with probability P
+    /// (default ½), e.g. `--rate fam.stallNow=0.01`; repeatable.
+    #[arg(long, value_name = "INPUT=P", requires = "random")]
+    rate: Vec<String>,
     /// Seed of the random inputs.
     #[arg(long, default_value_t = 0)]
     seed: u64,
@@ -100,16 +106,59 @@ pub fn run(a: SimArgs) -> Result<u8> {
                 }
             };
             let mut sink = sink(&views)?;
-            let run = statecheck_sim::run_streaming(
-                &program,
-                &mut ScenarioInputs::new(&sc),
-                opts,
-                &mut sink,
-            );
+            let run = if sc.loop_start.is_some() {
+                // A lasso is replayed whole (twice) to decide its temporal properties; it is as
+                // long as its file, and is then written like any run.
+                let traced = Options {
+                    no_trace: false,
+                    ..opts
+                };
+                let l = statecheck_sim::lasso::run_lasso(&program, &sc, traced);
+                if let Some(why) = &l.broken {
+                    eprintln!("error: {why} ({path})");
+                    return Err(Exit(1).into());
+                }
+                if !l.fair {
+                    eprintln!("note: the lasso is not fair (a `fair` constraint fails on its loop); temporal properties were not evaluated");
+                }
+                for (t, v) in l.run.inputs.iter().enumerate() {
+                    sink.inputs(t as u64, v);
+                }
+                for r in &l.run.trace {
+                    sink.tick(r.tick, &r.slots);
+                }
+                l.run
+            } else {
+                statecheck_sim::run_streaming(
+                    &program,
+                    &mut ScenarioInputs::new(&sc),
+                    opts,
+                    &mut sink,
+                )
+            };
             (run, sink)
         }
         (None, Some(n)) => {
-            let mut source = RandomInputs::new(&program, a.seed, n);
+            let mut source = RandomInputs::new(a.seed, n);
+            for r in &a.rate {
+                let (name, p) = r
+                    .split_once('=')
+                    .ok_or_else(|| anyhow::anyhow!("--rate takes INPUT=P, got `{r}`"))?;
+                let (name, p) = (name.trim(), p.trim());
+                let p: f64 = p
+                    .parse()
+                    .map_err(|_| anyhow::anyhow!("--rate {r}: `{p}` is not a number"))?;
+                let Some(k) = program.inputs.iter().position(|i| i.name == name) else {
+                    let names: Vec<&str> = program.inputs.iter().map(|i| i.name.as_str()).collect();
+                    bail!(
+                        "--rate {r}: `{name}` is not a free input of the system (free inputs: {})",
+                        names.join(", ")
+                    );
+                };
+                source
+                    .set_rate(&program, k, p)
+                    .map_err(|e| anyhow::anyhow!("--rate {r}: {}", e.message))?;
+            }
             let mut sink = sink(&views)?;
             let run = statecheck_sim::run_streaming(&program, &mut source, opts, &mut sink);
             (run, sink)

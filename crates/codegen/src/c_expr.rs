@@ -7,6 +7,7 @@
 
 use statecheck_ir::{BinOp, UnOp};
 use statecheck_ir::{Node, Program, SlotId, Stmt};
+use statecheck_model::ops;
 use std::fmt::Write;
 
 /// Emits C statements into a buffer.
@@ -52,19 +53,13 @@ pub(crate) fn lit(v: i64) -> String {
 pub(crate) fn pure(p: &Program, e: u32) -> bool {
     match p.nodes[e as usize] {
         Node::Const(_) | Node::Slot(_) | Node::Local(_) => true,
-        Node::Unary(op, a) => op != UnOp::Neg && pure(p, a),
+        Node::Unary(op, a) => !ops::unary_can_fail(op) && pure(p, a),
         Node::Binary(op, a, b, _) => {
-            let safe = match op {
-                BinOp::Add | BinOp::Sub | BinOp::Mul | BinOp::Shl => false,
-                BinOp::Div | BinOp::Rem => {
-                    matches!(p.nodes[b as usize], Node::Const(k) if k != 0 && k != -1)
-                }
-                BinOp::Shr => {
-                    matches!(p.nodes[b as usize], Node::Const(k) if (0..=62).contains(&k))
-                }
-                _ => true,
+            let rhs = match p.nodes[b as usize] {
+                Node::Const(k) => Some(k),
+                _ => None,
             };
-            safe && pure(p, a) && pure(p, b)
+            !ops::binary_can_fail(op, rhs) && pure(p, a) && pure(p, b)
         }
         Node::Ite(c, a, b) => pure(p, c) && pure(p, a) && pure(p, b),
         Node::Min(a, b) | Node::Max(a, b) => pure(p, a) && pure(p, b),

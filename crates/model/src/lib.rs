@@ -9,6 +9,7 @@
 
 mod chart;
 mod expr;
+pub mod formula;
 pub mod lint;
 pub mod model;
 pub mod ops;

@@ -32,6 +32,35 @@ impl OpError {
 /// Largest allowed shift amount.
 pub const MAX_SHIFT: i64 = 62;
 
+/// Whether `a op b` can fail for some operand values, given the right operand when it is a
+/// constant: the one definition of operator totality that the interpreter's register code and
+/// the code generators use to decide what needs no check.
+pub fn binary_can_fail(op: BinOp, rhs: Option<i64>) -> bool {
+    match op {
+        BinOp::Or
+        | BinOp::And
+        | BinOp::Eq
+        | BinOp::Ne
+        | BinOp::Lt
+        | BinOp::Le
+        | BinOp::Gt
+        | BinOp::Ge
+        | BinOp::BitOr
+        | BinOp::BitXor
+        | BinOp::BitAnd => false,
+        // Overflow, whatever the operands' constness (a shift can overflow too).
+        BinOp::Add | BinOp::Sub | BinOp::Mul | BinOp::Shl => true,
+        BinOp::Shr => !matches!(rhs, Some(k) if (0..=MAX_SHIFT).contains(&k)),
+        // Division by zero, and `i64::MIN / -1`.
+        BinOp::Div | BinOp::Rem => !matches!(rhs, Some(k) if k != 0 && k != -1),
+    }
+}
+
+/// Whether `op a` can fail for some operand value (`-i64::MIN` overflows).
+pub fn unary_can_fail(op: UnOp) -> bool {
+    op == UnOp::Neg
+}
+
 /// Apply a binary operator to two values. `&&` and `||` take 0/1 operands.
 #[inline]
 pub fn binary(op: BinOp, a: i64, b: i64) -> Result<i64, OpError> {
@@ -103,6 +132,69 @@ mod tests {
         assert_eq!(binary(BinOp::Rem, -7, 2), Ok(-1));
         assert_eq!(binary(BinOp::Rem, 7, -2), Ok(1));
         assert_eq!(binary(BinOp::Div, 1, 0), Err(OpError::DivisionByZero));
+    }
+
+    #[test]
+    fn totality_agrees_with_evaluation() {
+        // Every operator on a grid of operands that includes the extremes: whenever the
+        // evaluation fails, `binary_can_fail` must say it can (for that constant right operand
+        // and for an unknown one).
+        let vals = [
+            i64::MIN,
+            i64::MIN + 1,
+            -63,
+            -2,
+            -1,
+            0,
+            1,
+            2,
+            62,
+            63,
+            i64::MAX - 1,
+            i64::MAX,
+        ];
+        let ops = [
+            BinOp::Or,
+            BinOp::And,
+            BinOp::Eq,
+            BinOp::Ne,
+            BinOp::Lt,
+            BinOp::Le,
+            BinOp::Gt,
+            BinOp::Ge,
+            BinOp::BitOr,
+            BinOp::BitXor,
+            BinOp::BitAnd,
+            BinOp::Shl,
+            BinOp::Shr,
+            BinOp::Add,
+            BinOp::Sub,
+            BinOp::Mul,
+            BinOp::Div,
+            BinOp::Rem,
+        ];
+        for op in ops {
+            for a in vals {
+                for b in vals {
+                    let (a, b) = match op {
+                        BinOp::Or | BinOp::And => (a & 1, b & 1),
+                        _ => (a, b),
+                    };
+                    if binary(op, a, b).is_err() {
+                        assert!(binary_can_fail(op, Some(b)), "{op:?} {a} {b}");
+                        assert!(binary_can_fail(op, None), "{op:?}");
+                    }
+                }
+            }
+        }
+        for op in [UnOp::Neg, UnOp::Not, UnOp::BitNot] {
+            for a in vals {
+                let a = if op == UnOp::Not { a & 1 } else { a };
+                if unary(op, a).is_err() {
+                    assert!(unary_can_fail(op), "{op:?} {a}");
+                }
+            }
+        }
     }
 
     #[test]

@@ -4,6 +4,7 @@
 //! Nothing here decides what a tick does: runs drive [`statecheck_ir::Machine`]. The crate does
 //! no I/O; the CLI reads scenario files and renders traces.
 
+pub mod lasso;
 pub mod random;
 pub mod run;
 pub mod scenario;

@@ -18,6 +18,9 @@ use statecheck_ir::Program;
 pub struct Scenario {
     /// For each tick, `(index into Program::inputs, value)` pairs.
     pub ticks: Vec<Vec<(usize, i64)>>,
+    /// A lasso's first loop tick (a `loop:` line before it): after the last tick the state
+    /// after tick `loop_start - 1` recurs and the loop repeats forever (`crate::lasso`).
+    pub loop_start: Option<usize>,
 }
 
 /// A problem in a scenario file.
@@ -42,10 +45,24 @@ pub const MAX_TICKS: usize = 100_000_000;
 pub fn parse(text: &str, program: &Program) -> Result<Scenario, Vec<ScenarioError>> {
     let mut ticks = Vec::new();
     let mut errors = Vec::new();
+    let mut loop_start: Option<usize> = None;
     for (ln, raw) in text.lines().enumerate() {
         let line_no = ln + 1;
         let content = raw.split('#').next().unwrap_or("");
         if content.trim().is_empty() {
+            continue;
+        }
+        if content.trim() == "loop:" {
+            if loop_start.is_some() {
+                errors.push(ScenarioError {
+                    line: line_no,
+                    col: 1,
+                    len: raw.len().max(1),
+                    message: "a second `loop:` line".into(),
+                    hint: Some("a scenario has at most one loop, at its end".into()),
+                });
+            }
+            loop_start = Some(ticks.len());
             continue;
         }
         let err = |col: usize, len: usize, message: String, hint: Option<String>| ScenarioError {
@@ -177,7 +194,18 @@ pub fn parse(text: &str, program: &Program) -> Result<Scenario, Vec<ScenarioErro
         }
     }
     if errors.is_empty() {
-        Ok(Scenario { ticks })
+        if loop_start.is_some_and(|k| k == 0 || k >= ticks.len()) {
+            return Err(vec![ScenarioError {
+                line: 1,
+                col: 1,
+                len: 1,
+                message:
+                    "the `loop:` line must follow the first tick and precede at least one tick"
+                        .into(),
+                hint: Some("tick 0 only initialises, so a loop starts at tick 1 or later".into()),
+            }]);
+        }
+        Ok(Scenario { ticks, loop_start })
     } else {
         Err(errors)
     }
@@ -234,7 +262,12 @@ const HEADER: &str =
 pub fn format(s: &Scenario, program: &Program) -> String {
     let mut w = ScenarioWriter::new(program);
     let mut out = w.header().to_string();
-    for tick in &s.ticks {
+    for (i, tick) in s.ticks.iter().enumerate() {
+        // A fold never crosses the loop's start.
+        if s.loop_start == Some(i) {
+            out.push_str(&w.finish());
+            out.push_str("loop:\n");
+        }
         out.push_str(&w.push_changes(tick));
     }
     out.push_str(&w.finish());
@@ -353,5 +386,24 @@ pub fn from_input_vectors(program: &Program, vectors: &[Vec<i64>]) -> Scenario {
         .iter()
         .map(|vec| changes(program, &mut held, vec))
         .collect();
-    Scenario { ticks }
+    Scenario {
+        ticks,
+        loop_start: None,
+    }
+}
+
+/// A lasso scenario: like [`from_input_vectors`], with a `loop:` before tick `loop_start`
+/// whose first tick writes every held input, so that repeating the loop repeats its inputs.
+pub fn from_lasso(program: &Program, vectors: &[Vec<i64>], loop_start: usize) -> Scenario {
+    let mut s = from_input_vectors(program, vectors);
+    if let (Some(tick), Some(vec)) = (s.ticks.get_mut(loop_start), vectors.get(loop_start)) {
+        tick.clear();
+        for (k, inp) in program.inputs.iter().enumerate() {
+            if !inp.is_event || vec[k] != 0 {
+                tick.push((k, vec[k]));
+            }
+        }
+    }
+    s.loop_start = Some(loop_start);
+    s
 }

@@ -8,6 +8,7 @@
 
 use crate::aig::{Aig, Lit};
 use crate::engine::Invariant;
+use crate::error::{Error, ErrorKind};
 use crate::sat::{SLit, Solver, Start, Unroller};
 use std::fmt::Write;
 
@@ -36,7 +37,7 @@ pub fn write(aig: &Aig, property: &str, inv: &Invariant) -> String {
 }
 
 /// Parse a certificate for a circuit with `latches` latches.
-pub fn parse(text: &str, latches: usize) -> Result<Invariant, String> {
+pub fn parse(text: &str, latches: usize) -> Result<Invariant, Error> {
     let mut inv = Vec::new();
     let mut header = false;
     for (ln, line) in text.lines().enumerate() {
@@ -47,43 +48,44 @@ pub fn parse(text: &str, latches: usize) -> Result<Invariant, String> {
         }
         if let Some(rest) = t.strip_prefix("p inv") {
             let nums: Vec<&str> = rest.split_whitespace().collect();
-            let n: usize = nums.first().and_then(|x| x.parse().ok()).ok_or(format!(
-                "line {at}: bad header (expected `p inv LATCHES CLAUSES`)"
-            ))?;
+            let n: usize = nums.first().and_then(|x| x.parse().ok()).ok_or_else(|| {
+                Error::syntax(Some(at), "bad header (expected `p inv LATCHES CLAUSES`)")
+            })?;
             if n != latches {
-                return Err(format!(
-                    "line {at}: the certificate is for {n} latches, the circuit has {latches}"
+                return Err(Error::syntax(
+                    Some(at),
+                    format!("the certificate is for {n} latches, the circuit has {latches}"),
                 ));
             }
             header = true;
             continue;
         }
         if !header {
-            return Err(format!("line {at}: clause before the `p inv` header"));
+            return Err(Error::syntax(Some(at), "clause before the `p inv` header"));
         }
         let mut cl = Vec::new();
         let mut ended = false;
         for tok in t.split_whitespace() {
             let v: i64 = tok
                 .parse()
-                .map_err(|_| format!("line {at}: `{tok}` is not a latch number"))?;
+                .map_err(|_| Error::syntax(Some(at), format!("`{tok}` is not a latch number")))?;
             if v == 0 {
                 ended = true;
                 break;
             }
             let j = v.unsigned_abs() as usize;
             if j > latches {
-                return Err(format!("line {at}: latch {j} does not exist"));
+                return Err(Error::syntax(Some(at), format!("latch {j} does not exist")));
             }
             cl.push((j - 1, v > 0));
         }
         if !ended {
-            return Err(format!("line {at}: clause does not end with 0"));
+            return Err(Error::syntax(Some(at), "clause does not end with 0"));
         }
         inv.push(cl);
     }
     if !header {
-        return Err("no `p inv` header".into());
+        return Err(Error::syntax(None, "no `p inv` header"));
     }
     Ok(inv)
 }
@@ -129,12 +131,12 @@ fn assert_inv(u: &mut Unroller, s: &mut Solver, aig: &Aig, inv: &Invariant, t: u
 }
 
 /// Check that `inv` proves `aig.bad[0]` unreachable; `Err` names the failed obligation.
-pub fn check(aig: &Aig, inv: &Invariant) -> Result<(), String> {
+pub fn check(aig: &Aig, inv: &Invariant) -> Result<(), Error> {
     let bad = aig.bad.first().copied().unwrap_or(Lit::FALSE);
-    let unsat = |s: &mut Solver, what: &str| match s.solve(&[]) {
+    let unsat = |s: &mut Solver, obligation: &'static str| match s.solve(&[]) {
         Some(false) => Ok(()),
-        Some(true) => Err(format!("the certificate fails: {what}")),
-        None => Err("the SAT solver failed".to_string()),
+        Some(true) => Err(Error::of(ErrorKind::CertificateFails { obligation })),
+        None => Err(Error::of(ErrorKind::SolverFailed)),
     };
     // Init ⇒ Inv.
     let mut s = Solver::new();

@@ -16,8 +16,11 @@ pub mod bv;
 pub mod cert;
 pub mod check;
 pub mod engine;
+mod error;
 pub mod ic3;
 pub mod kind;
 pub mod sat;
 pub mod scorr;
 pub mod ternary;
+
+pub use error::{Error, ErrorKind};

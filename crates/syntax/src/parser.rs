@@ -28,10 +28,12 @@
 //! | E0018 | malformed duration: missing or unknown time unit, or an amount that is not a primary expression |
 //! | E0019 | `if` expression used as an operand without parentheses |
 //! | E0020 | missing `return` in a function body |
+//! | E0030 | malformed CTL until: `A[`/`E[` without `U` |
 
 mod body;
 mod expr;
 mod items;
+mod temporal;
 
 use crate::ast;
 use crate::lexer::{Kw, Tok, Token};

@@ -13,6 +13,7 @@ use super::classes::Classes;
 use super::signature::{eval, Rng};
 use crate::aig::{Aig, Lit, Node};
 use crate::engine::Limits;
+use crate::error::{Error, ErrorKind};
 use crate::sat::{Solver, Start, Unroller};
 
 /// What the refinement did.
@@ -88,7 +89,7 @@ fn pass(
     frames: usize,
     limits: &Limits,
     stats: &mut Rounds,
-) -> Result<bool, String> {
+) -> Result<bool, Error> {
     let repr = classes.repr_map(aig.nodes.len());
     let mut f = unroll(aig, &repr, speculate, frames);
     let last = frames - 1;
@@ -121,7 +122,7 @@ fn pass(
             continue;
         }
         if let Some(why) = limits.expired() {
-            return Err(why);
+            return Err(Error::of(ErrorKind::Limit(why)));
         }
         let m = u.lit(&mut s, miter, 0);
         stats.calls += 1;
@@ -134,14 +135,14 @@ fn pass(
                 changed = true;
                 live = classes.repr_map(aig.nodes.len());
             }
-            None => return Err("the SAT solver failed".into()),
+            None => return Err(Error::of(ErrorKind::SolverFailed)),
         }
     }
     Ok(changed)
 }
 
 /// Refine `classes` until every remaining equality holds initially and inductively.
-pub(crate) fn prove(aig: &Aig, classes: &mut Classes, limits: &Limits) -> Result<Rounds, String> {
+pub(crate) fn prove(aig: &Aig, classes: &mut Classes, limits: &Limits) -> Result<Rounds, Error> {
     let mut stats = Rounds::default();
     while pass(aig, classes, false, 1, limits, &mut stats)? {}
     loop {

@@ -65,7 +65,7 @@ const EFFORT: signature::Effort = signature::Effort {
 
 /// Reduce `aig` by signal correspondence. `Err`: a limit stopped it (the reduction is only
 /// sound once the refinement has reached its fixpoint).
-pub fn reduce(aig: &Aig, limits: &Limits) -> Result<Reduction, String> {
+pub fn reduce(aig: &Aig, limits: &Limits) -> Result<Reduction, crate::Error> {
     let start = Instant::now();
     let cone = aig.cone();
     let cands: Vec<u32> = (0..aig.nodes.len() as u32)

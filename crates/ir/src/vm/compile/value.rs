@@ -5,6 +5,7 @@
 use super::cond::Cmp;
 use super::{imm, Compiler, Op, Reg, NO_SITE};
 use crate::program::*;
+use statecheck_model::ops;
 use statecheck_syntax::ast::{BinOp, UnOp};
 
 /// True when evaluating `e` can neither fail nor write anything, so evaluating it where the
@@ -12,31 +13,17 @@ use statecheck_syntax::ast::{BinOp, UnOp};
 fn total(nodes: &[Node], e: ExprId) -> bool {
     match nodes[e as usize] {
         Node::Const(_) | Node::Slot(_) | Node::Local(_) => true,
-        Node::Unary(UnOp::Not | UnOp::BitNot, a) => total(nodes, a),
-        Node::Binary(
-            BinOp::Eq
-            | BinOp::Ne
-            | BinOp::Lt
-            | BinOp::Le
-            | BinOp::Gt
-            | BinOp::Ge
-            | BinOp::BitAnd
-            | BinOp::BitOr
-            | BinOp::BitXor
-            | BinOp::And
-            | BinOp::Or,
-            a,
-            b,
-            _,
-        )
-        | Node::Min(a, b)
-        | Node::Max(a, b) => total(nodes, a) && total(nodes, b),
+        Node::Unary(op, a) => !ops::unary_can_fail(op) && total(nodes, a),
+        Node::Binary(op, a, b, _) => {
+            let rhs = match nodes[b as usize] {
+                Node::Const(k) => Some(k),
+                _ => None,
+            };
+            !ops::binary_can_fail(op, rhs) && total(nodes, a) && total(nodes, b)
+        }
+        Node::Min(a, b) | Node::Max(a, b) => total(nodes, a) && total(nodes, b),
         Node::Ite(c, a, b) => total(nodes, c) && total(nodes, a) && total(nodes, b),
-        Node::Unary(UnOp::Neg, _)
-        | Node::Binary(..)
-        | Node::Abs(..)
-        | Node::Check(..)
-        | Node::Let(..) => false,
+        Node::Abs(..) | Node::Check(..) | Node::Let(..) => false,
     }
 }
 
