@@ -48,6 +48,10 @@ pub struct SimArgs {
     /// Count state entries and transition firings; print the summary and, with FILE, write JSON.
     #[arg(long, value_name = "FILE", num_args = 0..=1, default_missing_value = "")]
     coverage: Option<String>,
+    /// Do not stop at a property violation: run every tick, report the first violation at
+    /// the end (exit 4).
+    #[arg(long)]
+    keep_going: bool,
     /// Print nothing but errors (and the requested files).
     #[arg(long, short)]
     quiet: bool,
@@ -61,6 +65,7 @@ pub fn run(a: SimArgs) -> Result<u8> {
     let opts = Options {
         coverage: a.coverage.is_some(),
         no_trace: true,
+        keep_going: a.keep_going,
     };
     let views = Views::new(&loaded.model, &program);
     let format = if a.json {
