@@ -227,3 +227,39 @@ fn rates_weight_the_random_inputs() {
         assert_eq!(out.status.code(), Some(2), "{bad}");
     }
 }
+
+/// Streamed outputs stay whole documents: `--keep-going` runs all 1500 ticks of the FAM closed
+/// loop past its known violation (so the JSON holds 1500 ticks and ends as `violated`), the
+/// table past the 1000 rows that size its columns has one header and one row per tick, and
+/// the CSV one header and 1500 rows.
+#[test]
+fn streamed_outputs_are_whole_documents() {
+    let args = |fmt: &'static str| {
+        let mut a = vec![
+            "sim",
+            "examples/fam/fam_system.sc",
+            "--random",
+            "1500",
+            "--seed",
+            "1",
+            "--keep-going",
+        ];
+        if !fmt.is_empty() {
+            a.push(fmt);
+        }
+        a
+    };
+    let out = statecheck(&args("--json"));
+    assert_eq!(out.status.code(), Some(4));
+    let v = json(&out);
+    assert_eq!(v["ticks"].as_array().map(Vec::len), Some(1500));
+    assert_eq!(v["result"]["status"], "violated");
+    let out = statecheck(&args(""));
+    let text = String::from_utf8_lossy(&out.stdout);
+    let lines: Vec<&str> = text.lines().collect();
+    assert_eq!(lines.len(), 1501);
+    assert!(lines[0].starts_with("tick"));
+    assert!(lines[1500].trim_start().starts_with("1499 "));
+    let out = statecheck(&args("--csv"));
+    assert_eq!(String::from_utf8_lossy(&out.stdout).lines().count(), 1501);
+}
