@@ -10,10 +10,12 @@ mod export_cmd;
 mod fmt_cmd;
 mod gen_cmd;
 mod load;
+mod outpath;
 mod output;
 mod serve_cmd;
 mod sim_cmd;
 mod sim_sink;
+mod supervisor;
 mod synth_cmd;
 mod verify_cmd;
 
@@ -72,6 +74,11 @@ enum Command {
     Serve(serve_cmd::ServeArgs),
     /// Rewrite model files in the canonical layout (`--check`: only report).
     Fmt(fmt_cmd::FmtArgs),
+    /// Explain a diagnostic code (`statecheck explain E0111`); without a code, list them all.
+    Explain {
+        /// The code, e.g. E0111.
+        code: Option<String>,
+    },
     /// Run the language server on standard input and output (for editors; docs/tools.md).
     Lsp,
     /// Draw a system's charts as Graphviz DOT, optionally with coverage counts.
@@ -149,6 +156,7 @@ fn run(cli: Cli) -> Result<u8> {
         Command::Synth(args) => synth_cmd::run(args),
         Command::Serve(args) => serve_cmd::run(args),
         Command::Fmt(args) => fmt_cmd::run(args),
+        Command::Explain { code } => explain(code.as_deref()),
         Command::Lsp => {
             statecheck_lsp::serve_stdio()?;
             Ok(0)
@@ -164,6 +172,7 @@ fn run(cli: Cli) -> Result<u8> {
             let program = loaded.lower(sys)?;
             let counts = match coverage {
                 Some(f) => {
+                    outpath::note_input(&f);
                     let text = std::fs::read_to_string(&f)
                         .map_err(|e| anyhow::anyhow!("cannot read `{f}`: {e}"))?;
                     let v: serde_json::Value = serde_json::from_str(&text)
@@ -182,11 +191,29 @@ fn run(cli: Cli) -> Result<u8> {
     }
 }
 
+/// `statecheck explain [CODE]`: the page of a code from the one table of codes, or the list.
+fn explain(code: Option<&str>) -> Result<u8> {
+    use statecheck_base::codes;
+    let Some(code) = code else {
+        for c in codes::CODES {
+            println!("{}  {}", c.code, c.title);
+        }
+        return Ok(0);
+    };
+    match codes::lookup(code) {
+        Some(c) => {
+            print!("{}", codes::page(c));
+            Ok(0)
+        }
+        None => anyhow::bail!("unknown diagnostic code `{code}`; `statecheck explain` lists them"),
+    }
+}
+
 /// Write to a file, or to standard output when no file is given.
 pub fn write_out(path: Option<&str>, text: &str) -> Result<()> {
     use std::io::Write;
     match path {
-        Some(p) => std::fs::write(p, text).map_err(|e| anyhow::anyhow!("cannot write `{p}`: {e}")),
+        Some(p) => outpath::write(std::path::Path::new(p), text.as_bytes()),
         None => {
             let mut out = std::io::stdout().lock();
             // A closed pipe (e.g. `| head`) is not an error worth reporting.

@@ -8,9 +8,7 @@ use anyhow::{bail, Result};
 use clap::Args;
 use statecheck_base::LineIndex;
 use statecheck_ir::view::TraceView as Views;
-use statecheck_sim::{
-    random::RandomInputs, scenario, NoInput, Options, ScenarioInputs, Sink, Stop,
-};
+use statecheck_sim::{random::RandomInputs, scenario, NoInput, Options, ScenarioInputs, Stop};
 
 /// Arguments of `statecheck sim`.
 #[derive(Args)]
@@ -20,7 +18,7 @@ pub struct SimArgs {
     /// The system (or chart) to simulate.
     #[arg(long)]
     system: Option<String>,
-    /// A scenario file: the inputs per tick.
+    /// A scenario file: the inputs per tick (`-`: standard input).
     #[arg(long, conflicts_with = "random")]
     scenario: Option<String>,
     /// Run N ticks of random inputs within their types and the `assume`s.
@@ -89,31 +87,37 @@ pub fn run(a: SimArgs) -> Result<u8> {
     };
     let (run, sink) = match (&a.scenario, a.random) {
         (Some(path), _) => {
-            let text = std::fs::read_to_string(path)
-                .map_err(|e| anyhow::anyhow!("cannot read `{path}`: {e}"))?;
+            if path != "-" {
+                crate::outpath::note_input(path);
+            }
+            let text = if path == "-" {
+                let mut t = String::new();
+                std::io::Read::read_to_string(&mut std::io::stdin(), &mut t)
+                    .map_err(|e| anyhow::anyhow!("cannot read standard input: {e}"))?;
+                t
+            } else {
+                std::fs::read_to_string(path)
+                    .map_err(|e| anyhow::anyhow!("cannot read `{path}`: {e}"))?
+            };
             let sc = match scenario::parse(&text, &program) {
                 Ok(s) => s,
                 Err(errs) => {
-                    for e in &errs {
-                        let line = text.lines().nth(e.line - 1).unwrap_or("");
-                        eprintln!("error: {} ({path}:{}:{})", e.message, e.line, e.col);
-                        eprintln!("  | {line}");
-                        eprintln!(
-                            "  | {}{}",
-                            " ".repeat(e.col - 1),
-                            "^".repeat(e.len.min(line.len().saturating_sub(e.col - 1)).max(1))
-                        );
-                        if let Some(h) = &e.hint {
-                            eprintln!("  = help: {h}");
-                        }
-                    }
+                    let shown = if path == "-" {
+                        "<stdin>"
+                    } else {
+                        path.as_str()
+                    };
+                    let (kept, more) = crate::diag::cap_scenario_errors(&errs);
+                    crate::diag::eprint(shown, &text, &scenario_diagnostics(&text, &kept));
+                    eprint!("{more}");
                     return Err(Exit(1).into());
                 }
             };
             let mut sink = sink(&views)?;
-            let run = if sc.loop_start.is_some() {
-                // A lasso is replayed whole (twice) to decide its temporal properties; it is as
-                // long as its file, and is then written like any run.
+            if sc.loop_start.is_some() {
+                // A lasso is replayed in memory (its loop runs twice and the recurrence of
+                // the loop's first state is checked), then rendered tick by tick.
+                // The replay compares states along the trace: it needs the trace kept.
                 let traced = Options {
                     no_trace: false,
                     ..opts
@@ -126,25 +130,25 @@ pub fn run(a: SimArgs) -> Result<u8> {
                 if !l.fair {
                     eprintln!("note: the lasso is not fair (a `fair` constraint fails on its loop); temporal properties were not evaluated");
                 }
-                for (t, v) in l.run.inputs.iter().enumerate() {
-                    sink.inputs(t as u64, v);
+                for (t, inputs) in l.run.inputs.iter().enumerate() {
+                    statecheck_sim::Sink::inputs(&mut sink, t as u64, inputs);
                 }
-                for r in &l.run.trace {
-                    sink.tick(r.tick, &r.slots);
+                for rec in &l.run.trace {
+                    statecheck_sim::Sink::tick(&mut sink, rec.tick, &rec.slots);
                 }
-                l.run
+                (l.run, sink)
             } else {
-                statecheck_sim::run_streaming(
+                let run = statecheck_sim::run_streaming(
                     &program,
                     &mut ScenarioInputs::new(&sc),
                     opts,
                     &mut sink,
-                )
-            };
-            (run, sink)
+                );
+                (run, sink)
+            }
         }
         (None, Some(n)) => {
-            let mut source = RandomInputs::new(a.seed, n);
+            let mut source = RandomInputs::new(&program, a.seed, n);
             for r in &a.rate {
                 let (name, p) = r
                     .split_once('=')
@@ -308,4 +312,32 @@ fn describe_stop(
             ),
         ),
     }
+}
+
+/// Scenario errors as diagnostics (byte spans from their 1-based line and column), so that
+/// they render like the model's and follow `--message-format`.
+fn scenario_diagnostics(
+    text: &str,
+    errs: &[scenario::ScenarioError],
+) -> Vec<statecheck_base::Diagnostic> {
+    let starts: Vec<usize> = std::iter::once(0)
+        .chain(text.match_indices('\n').map(|(i, _)| i + 1))
+        .collect();
+    errs.iter()
+        .map(|e| {
+            let line_start = starts.get(e.line - 1).copied().unwrap_or(text.len());
+            let start = (line_start + e.col - 1).min(text.len());
+            let end = (start + e.len).min(text.len());
+            let mut d = statecheck_base::Diagnostic::error(
+                e.code,
+                e.message.clone(),
+                statecheck_base::Span::new(start, end),
+            )
+            .with_label("here");
+            if let Some(h) = &e.hint {
+                d = d.with_hint(h.clone());
+            }
+            d
+        })
+        .collect()
 }

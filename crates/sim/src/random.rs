@@ -31,16 +31,13 @@ pub const MAX_ENUMERATED: u128 = 1 << 16;
 /// Draws per tick, when the candidates are too many to enumerate, before giving up.
 pub const MAX_TRIES: usize = 10_000;
 
-/// Random inputs for a fixed number of ticks. The `assume`s are solved for the program of the
-/// first machine it is asked about (or the first [`RandomInputs::set_rate`]).
+/// Random inputs for a fixed number of ticks of one program.
 pub struct RandomInputs {
     rng: rand::rngs::StdRng,
     ticks: u64,
     /// Per input: the probability that it is 1, for a 0..1 input given a rate.
     rates: Vec<(usize, f64)>,
     solved: Option<Solved>,
-    /// Why the last refused tick had no inputs.
-    refusal: Option<NoInput>,
 }
 
 /// The `assume`s of one program, solved.
@@ -70,14 +67,14 @@ pub struct RateError {
 }
 
 impl RandomInputs {
-    /// `ticks` ticks of random inputs from `seed` (the same seed gives the same inputs).
-    pub fn new(seed: u64, ticks: u64) -> Self {
+    /// `ticks` ticks of random inputs of `program` from `seed` (the same seed gives the same
+    /// inputs).
+    pub fn new(program: &Program, seed: u64, ticks: u64) -> Self {
         RandomInputs {
             rng: rand::rngs::StdRng::seed_from_u64(seed),
             ticks,
             rates: Vec::new(),
-            solved: None,
-            refusal: None,
+            solved: Some(Solved::new(program, &[])),
         }
     }
 
@@ -300,23 +297,13 @@ fn pick_weighted(rng: &mut impl Rng, cumulative: &[f64]) -> usize {
 }
 
 impl InputSource for RandomInputs {
-    fn next(&mut self, tick: u64, machine: &Machine, inputs: &mut [i64]) -> Result<bool, usize> {
+    fn next(&mut self, tick: u64, machine: &Machine, inputs: &mut [i64]) -> Result<bool, NoInput> {
         if tick >= self.ticks {
             return Ok(false);
         }
         let solved = self
             .solved
             .get_or_insert_with(|| Solved::new(machine.program(), &self.rates));
-        match solved.draw(machine, &mut self.rng, inputs) {
-            Ok(()) => Ok(true),
-            Err(why) => {
-                self.refusal = Some(why);
-                Err(why.assume())
-            }
-        }
-    }
-
-    fn refusal(&self) -> Option<NoInput> {
-        self.refusal
+        solved.draw(machine, &mut self.rng, inputs).map(|()| true)
     }
 }

@@ -100,14 +100,9 @@ pub struct Options {
 /// Where a run gets its inputs from.
 pub trait InputSource {
     /// Fill `inputs` (in `Program::inputs` order) for `tick`; the machine holds the state
-    /// before the tick. Return false when the run is over, the index of an `assume` when no
-    /// inputs satisfy the `assume`s (then [`InputSource::refusal`] may say why).
-    fn next(&mut self, tick: u64, machine: &Machine, inputs: &mut [i64]) -> Result<bool, usize>;
-
-    /// Why the last refused tick had no inputs, when the source knows.
-    fn refusal(&self) -> Option<NoInput> {
-        None
-    }
+    /// before the tick. Return false when the run is over, an error when no inputs satisfy
+    /// the `assume`s.
+    fn next(&mut self, tick: u64, machine: &Machine, inputs: &mut [i64]) -> Result<bool, NoInput>;
 }
 
 /// Inputs from a scenario: held inputs keep their value, events last one tick.
@@ -123,7 +118,7 @@ impl<'s> ScenarioInputs<'s> {
 }
 
 impl InputSource for ScenarioInputs<'_> {
-    fn next(&mut self, tick: u64, machine: &Machine, inputs: &mut [i64]) -> Result<bool, usize> {
+    fn next(&mut self, tick: u64, machine: &Machine, inputs: &mut [i64]) -> Result<bool, NoInput> {
         let Some(changes) = self.scenario.ticks.get(tick as usize) else {
             return Ok(false);
         };
@@ -215,9 +210,12 @@ pub fn run_streaming(
         match source.next(tick, &m, &mut inputs) {
             Ok(true) => {}
             Ok(false) => break Stop::Completed,
-            Err(assume) => {
-                no_input = source.refusal();
-                break Stop::AssumeViolated { tick, assume };
+            Err(why) => {
+                no_input = Some(why);
+                break Stop::AssumeViolated {
+                    tick,
+                    assume: why.assume(),
+                };
             }
         }
         let result = tick_once(program, &mut m, tick, &inputs, &mut reached, &mut || {
