@@ -24,6 +24,10 @@ pub struct SimArgs {
     /// Run N ticks of random inputs within their types and the `assume`s.
     #[arg(long, value_name = "N")]
     random: Option<u64>,
+    /// With --random: make a boolean input or event be true/present with probability P
+    /// (default ½), e.g. `--rate fam.stallNow=0.01`; repeatable.
+    #[arg(long, value_name = "INPUT=P", requires = "random")]
+    rate: Vec<String>,
     /// Seed of the random inputs.
     #[arg(long, default_value_t = 0)]
     seed: u64,
@@ -42,6 +46,10 @@ pub struct SimArgs {
     /// Count state entries and transition firings; print the summary and, with FILE, write JSON.
     #[arg(long, value_name = "FILE", num_args = 0..=1, default_missing_value = "")]
     coverage: Option<String>,
+    /// Do not stop at a property violation: run every tick, report the first violation at
+    /// the end (exit 4).
+    #[arg(long)]
+    keep_going: bool,
     /// Print nothing but errors (and the requested files).
     #[arg(long, short)]
     quiet: bool,
@@ -55,6 +63,7 @@ pub fn run(a: SimArgs) -> Result<u8> {
     let opts = Options {
         coverage: a.coverage.is_some(),
         no_trace: true,
+        keep_going: a.keep_going,
     };
     let views = Views::new(&loaded.model, &program);
     let format = if a.json {
@@ -108,7 +117,12 @@ pub fn run(a: SimArgs) -> Result<u8> {
             if sc.loop_start.is_some() {
                 // A lasso is replayed in memory (its loop runs twice and the recurrence of
                 // the loop's first state is checked), then rendered tick by tick.
-                let l = statecheck_sim::lasso::run_lasso(&program, &sc, opts);
+                // The replay compares states along the trace: it needs the trace kept.
+                let traced = Options {
+                    no_trace: false,
+                    ..opts
+                };
+                let l = statecheck_sim::lasso::run_lasso(&program, &sc, traced);
                 if let Some(why) = &l.broken {
                     eprintln!("error: {why} ({path})");
                     return Err(Exit(1).into());
@@ -135,6 +149,25 @@ pub fn run(a: SimArgs) -> Result<u8> {
         }
         (None, Some(n)) => {
             let mut source = RandomInputs::new(&program, a.seed, n);
+            for r in &a.rate {
+                let (name, p) = r
+                    .split_once('=')
+                    .ok_or_else(|| anyhow::anyhow!("--rate takes INPUT=P, got `{r}`"))?;
+                let (name, p) = (name.trim(), p.trim());
+                let p: f64 = p
+                    .parse()
+                    .map_err(|_| anyhow::anyhow!("--rate {r}: `{p}` is not a number"))?;
+                let Some(k) = program.inputs.iter().position(|i| i.name == name) else {
+                    let names: Vec<&str> = program.inputs.iter().map(|i| i.name.as_str()).collect();
+                    bail!(
+                        "--rate {r}: `{name}` is not a free input of the system (free inputs: {})",
+                        names.join(", ")
+                    );
+                };
+                source
+                    .set_rate(&program, k, p)
+                    .map_err(|e| anyhow::anyhow!("--rate {r}: {}", e.message))?;
+            }
             let mut sink = sink(&views)?;
             let run = statecheck_sim::run_streaming(&program, &mut source, opts, &mut sink);
             (run, sink)

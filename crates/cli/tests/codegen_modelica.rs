@@ -655,6 +655,7 @@ fn every_scenario_runs_as_in_the_simulator() {
             statecheck_sim::Options {
                 coverage: true,
                 no_trace: false,
+                keep_going: false,
             },
         );
         if !matches!(run.stop, Stop::Completed) {
@@ -688,6 +689,7 @@ fn random_runs_run_as_in_the_simulator() {
                 statecheck_sim::Options {
                     coverage: true,
                     no_trace: false,
+                    keep_going: false,
                 },
             );
             checked += compare(&l, &run, None, &format!("{rel} {sys:?} seed {seed}"));
@@ -767,6 +769,7 @@ fn every_translation_path_runs_as_in_the_simulator() {
                 statecheck_sim::Options {
                     coverage: true,
                     no_trace: false,
+                    keep_going: false,
                 },
             );
             let kind = match &run.stop {

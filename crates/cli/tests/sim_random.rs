@@ -182,3 +182,84 @@ fn a_state_dependent_assume_is_honoured_by_sampling() {
     // but for a chance below 500^3 / 2^497.
     assert_eq!(prev, 3);
 }
+
+/// `--rate`: tests/sim/deadlock.sc, system Bounded. With `t.fill` at rate 0 it is never drawn,
+/// so `level` stays 0; at rate 1 it is drawn whenever the assume allows it: tick 0 only
+/// initialises (level 0), ticks 1-3 fill (1, 2, 3), and from level 3 on only `fill = false`
+/// is allowed (drawn although its weight is 0, as the only allowed vector).
+#[test]
+fn rates_weight_the_random_inputs() {
+    let levels = |rate: &str| -> Vec<i64> {
+        let out = statecheck(&[
+            "sim",
+            "tests/sim/deadlock.sc",
+            "--system",
+            "Bounded",
+            "--random",
+            "8",
+            "--seed",
+            "5",
+            "--rate",
+            rate,
+            "--json",
+        ]);
+        assert_eq!(out.status.code(), Some(0), "{rate}");
+        json(&out)["ticks"]
+            .as_array()
+            .expect("ticks")
+            .iter()
+            .map(|t| t["vars"]["t.level"].as_i64().expect("level"))
+            .collect()
+    };
+    assert_eq!(levels("t.fill=0"), [0; 8]);
+    assert_eq!(levels("t.fill=1"), [0, 1, 2, 3, 3, 3, 3, 3]);
+    for bad in ["t.level=0.5", "t.fill=2", "t.fill", "t.fill=x"] {
+        let out = statecheck(&[
+            "sim",
+            "tests/sim/deadlock.sc",
+            "--system",
+            "Bounded",
+            "--random",
+            "8",
+            "--rate",
+            bad,
+        ]);
+        assert_eq!(out.status.code(), Some(2), "{bad}");
+    }
+}
+
+/// Streamed outputs stay whole documents: `--keep-going` runs all 1500 ticks of the FAM closed
+/// loop past its known violation (so the JSON holds 1500 ticks and ends as `violated`), the
+/// table past the 1000 rows that size its columns has one header and one row per tick, and
+/// the CSV one header and 1500 rows.
+#[test]
+fn streamed_outputs_are_whole_documents() {
+    let args = |fmt: &'static str| {
+        let mut a = vec![
+            "sim",
+            "examples/fam/fam_system.sc",
+            "--random",
+            "1500",
+            "--seed",
+            "1",
+            "--keep-going",
+        ];
+        if !fmt.is_empty() {
+            a.push(fmt);
+        }
+        a
+    };
+    let out = statecheck(&args("--json"));
+    assert_eq!(out.status.code(), Some(4));
+    let v = json(&out);
+    assert_eq!(v["ticks"].as_array().map(Vec::len), Some(1500));
+    assert_eq!(v["result"]["status"], "violated");
+    let out = statecheck(&args(""));
+    let text = String::from_utf8_lossy(&out.stdout);
+    let lines: Vec<&str> = text.lines().collect();
+    assert_eq!(lines.len(), 1501);
+    assert!(lines[0].starts_with("tick"));
+    assert!(lines[1500].trim_start().starts_with("1499 "));
+    let out = statecheck(&args("--csv"));
+    assert_eq!(String::from_utf8_lossy(&out.stdout).lines().count(), 1501);
+}

@@ -20,7 +20,7 @@
 use crate::run::{InputSource, NoInput};
 use rand::{Rng, RngExt, SeedableRng};
 use statecheck_ir::assume::InputSpace;
-use statecheck_ir::{Machine, Prepared, Program};
+use statecheck_ir::{eval, ExprId, Machine, Program};
 
 /// Draws per tick before a state-dependent `assume` is solved by enumeration.
 pub const REJECTION_TRIES: usize = 64;
@@ -31,21 +31,28 @@ pub const MAX_ENUMERATED: u128 = 1 << 16;
 /// Draws per tick, when the candidates are too many to enumerate, before giving up.
 pub const MAX_TRIES: usize = 10_000;
 
-/// Random inputs for a fixed number of ticks.
-pub struct RandomInputs<'p> {
-    p: &'p Program,
+/// Random inputs for a fixed number of ticks of one program.
+pub struct RandomInputs {
     rng: rand::rngs::StdRng,
     ticks: u64,
-    space: InputSpace,
     /// Per input: the probability that it is 1, for a 0..1 input given a rate.
+    rates: Vec<(usize, f64)>,
+    solved: Option<Solved>,
+}
+
+/// The `assume`s of one program, solved.
+struct Solved {
+    space: InputSpace,
     rates: Vec<Option<f64>>,
     /// With rates and a listing: the cumulative weights of the listed vectors.
     cumulative: Vec<f64>,
     /// Input-only conjuncts still to check per draw (when they could not be listed).
-    input_checks: Vec<Prepared>,
-    state_checks: Vec<Prepared>,
-    mixed_checks: Vec<Prepared>,
-    scratch: Machine<'p>,
+    input_checks: Vec<ExprId>,
+    state_checks: Vec<ExprId>,
+    mixed_checks: Vec<ExprId>,
+    /// A copy of the slots: the state before the tick and a candidate's inputs.
+    slots: Vec<i64>,
+    input_slots: Vec<u32>,
     candidates: Vec<i64>,
     weights: Vec<f64>,
 }
@@ -59,81 +66,92 @@ pub struct RateError {
     pub message: String,
 }
 
-impl<'p> RandomInputs<'p> {
+impl RandomInputs {
     /// `ticks` ticks of random inputs of `program` from `seed` (the same seed gives the same
     /// inputs).
-    pub fn new(program: &'p Program, seed: u64, ticks: u64) -> Self {
-        let mut space = InputSpace::new(program);
-        if !space.input_assumes.is_empty() {
-            space.solve_static(program);
-        }
-        let scratch = Machine::new(program);
-        let prep = |es: &[u32]| es.iter().map(|&e| program.prepare(e)).collect::<Vec<_>>();
-        let input_checks = if space.listed().is_some() {
-            Vec::new()
-        } else {
-            prep(&space.input_assumes)
-        };
-        let state_checks = prep(&space.state_assumes);
-        let mixed_checks = prep(&space.mixed_assumes);
+    pub fn new(program: &Program, seed: u64, ticks: u64) -> Self {
         RandomInputs {
-            p: program,
             rng: rand::rngs::StdRng::seed_from_u64(seed),
             ticks,
-            rates: vec![None; program.inputs.len()],
-            cumulative: Vec::new(),
-            input_checks,
-            state_checks,
-            mixed_checks,
-            scratch,
-            candidates: Vec::new(),
-            weights: Vec::new(),
-            space,
+            rates: Vec::new(),
+            solved: Some(Solved::new(program, &[])),
         }
     }
 
-    /// Make input `k` (in [`Program::inputs`] order, a boolean or event, or an integer in
-    /// `0..1`) be 1 with probability `rate` instead of ½.
-    pub fn set_rate(&mut self, k: usize, rate: f64) -> Result<(), RateError> {
+    /// Make input `k` of `program` (in [`Program::inputs`] order, a boolean or event, or an
+    /// integer in `0..1`) be 1 with probability `rate` instead of ½.
+    pub fn set_rate(&mut self, program: &Program, k: usize, rate: f64) -> Result<(), RateError> {
         let err = |message: String| RateError { input: k, message };
-        if k >= self.rates.len() {
+        let Some(inp) = program.inputs.get(k) else {
             return Err(err(format!("no input #{k}")));
-        }
+        };
         if !(0.0..=1.0).contains(&rate) {
             return Err(err(format!(
                 "the rate {rate} is not a probability (0 to 1)"
             )));
         }
-        if self.space.bounds(k) != (0, 1) {
-            let (lo, hi) = self.space.bounds(k);
+        let s = &program.slots[inp.slot as usize];
+        if (s.lo, s.hi) != (0, 1) {
             return Err(err(format!(
-                "a rate applies to a boolean or an event, not to a value in {lo}..{hi}"
+                "a rate applies to a boolean or an event, not to a value in {}..{}",
+                s.lo, s.hi
             )));
         }
-        self.rates[k] = Some(rate);
-        self.cumulative.clear();
-        if let Some((flat, n)) = self.space.listed() {
-            let w = self.rates.len();
+        self.rates.push((k, rate));
+        self.solved = Some(Solved::new(program, &self.rates));
+        Ok(())
+    }
+}
+
+impl Solved {
+    fn new(p: &Program, rates: &[(usize, f64)]) -> Solved {
+        let mut space = InputSpace::new(p);
+        if !space.input_assumes.is_empty() {
+            space.solve_static(p);
+        }
+        let input_checks = if space.listed().is_some() {
+            Vec::new()
+        } else {
+            space.input_assumes.clone()
+        };
+        let mut per_input = vec![None; p.inputs.len()];
+        for &(k, r) in rates {
+            per_input[k] = Some(r);
+        }
+        let mut cumulative = Vec::new();
+        if let (Some((flat, n)), false) = (space.listed(), rates.is_empty()) {
+            let w = p.inputs.len();
             let mut total = 0.0;
-            self.cumulative.reserve(n);
+            cumulative.reserve(n);
             for v in 0..n {
-                total += weight(&self.rates, &flat[v * w..v * w + w]);
-                self.cumulative.push(total);
+                total += weight(&per_input, &flat[v * w..v * w + w]);
+                cumulative.push(total);
             }
         }
-        Ok(())
+        Solved {
+            state_checks: space.state_assumes.clone(),
+            mixed_checks: space.mixed_assumes.clone(),
+            input_checks,
+            space,
+            rates: per_input,
+            cumulative,
+            slots: Vec::new(),
+            input_slots: p.inputs.iter().map(|i| i.slot).collect(),
+            candidates: Vec::new(),
+            weights: Vec::new(),
+        }
     }
 
     /// One draw from the proposal: a listed vector, or each input on its own.
-    fn propose(&mut self, out: &mut [i64]) {
+    fn propose(&self, rng: &mut impl Rng, out: &mut [i64]) {
         if let Some((flat, n)) = self.space.listed() {
             if n == 0 {
                 return;
             }
             let i = if self.cumulative.is_empty() {
-                self.rng.random_range(0..n)
+                rng.random_range(0..n)
             } else {
-                pick_weighted(&mut self.rng, &self.cumulative)
+                pick_weighted(rng, &self.cumulative)
             };
             let w = out.len();
             out.copy_from_slice(&flat[i * w..i * w + w]);
@@ -141,41 +159,41 @@ impl<'p> RandomInputs<'p> {
         }
         for (k, x) in out.iter_mut().enumerate() {
             *x = match self.rates[k] {
-                Some(r) => i64::from(self.rng.random_bool(r)),
+                Some(r) => i64::from(rng.random_bool(r)),
                 None => {
                     let (lo, hi) = self.space.bounds(k);
-                    self.rng.random_range(lo..=hi)
+                    rng.random_range(lo..=hi)
                 }
             };
         }
     }
 
-    /// Whether the candidate in the scratch machine's input slots satisfies the conjuncts that
-    /// are checked per draw.
-    fn allowed(&mut self) -> bool {
-        let m = &mut self.scratch;
-        self.input_checks.iter().all(|&e| m.holds(e))
-            && self.mixed_checks.iter().all(|&e| m.holds(e))
+    fn holds(&self, p: &Program, e: ExprId) -> bool {
+        matches!(eval(&p.nodes, &self.slots, e), Ok(v) if v != 0)
+    }
+
+    /// Whether the candidate in the input slots satisfies the conjuncts checked per draw.
+    fn allowed(&self, p: &Program) -> bool {
+        self.input_checks.iter().all(|&e| self.holds(p, e))
+            && self.mixed_checks.iter().all(|&e| self.holds(p, e))
     }
 
     fn set_inputs(&mut self, v: &[i64]) {
-        for (inp, &x) in self.p.inputs.iter().zip(v) {
-            self.scratch.set(inp.slot, x);
+        for (&s, &x) in self.input_slots.iter().zip(v) {
+            self.slots[s as usize] = x;
         }
     }
 
-    /// The first `assume` (by index) that the scratch machine violates.
-    fn first_violated(&mut self) -> usize {
-        let m = &mut self.scratch;
-        self.p
-            .assumes
+    /// The first `assume` (by index) that the current slots violate.
+    fn first_violated(&self, p: &Program) -> usize {
+        p.assumes
             .iter()
-            .position(|&a| m.eval(a).map_or(true, |v| v == 0))
+            .position(|&a| !self.holds(p, a))
             .unwrap_or(0)
     }
 
     /// Every candidate tried, one drawn among the allowed; `false` when none is.
-    fn enumerate(&mut self, inputs: &mut [i64]) -> bool {
+    fn enumerate(&mut self, p: &Program, rng: &mut impl Rng, inputs: &mut [i64]) -> bool {
         let w = inputs.len();
         let n = self.space.per_tick();
         self.candidates.clear();
@@ -188,7 +206,7 @@ impl<'p> RandomInputs<'p> {
                 v = self.space.vector(pos);
             }
             self.set_inputs(&v);
-            if self.allowed() {
+            if self.allowed(p) {
                 self.candidates.extend_from_slice(&v);
                 self.weights.push(weight(&self.rates, &v));
             }
@@ -196,8 +214,7 @@ impl<'p> RandomInputs<'p> {
                 self.space.advance(&mut v);
             }
         }
-        let found = self.weights.len();
-        if found == 0 {
+        if self.weights.is_empty() {
             return false;
         }
         let mut total = 0.0;
@@ -205,9 +222,51 @@ impl<'p> RandomInputs<'p> {
             total += *x;
             *x = total;
         }
-        let i = pick_weighted(&mut self.rng, &self.weights);
+        let i = pick_weighted(rng, &self.weights);
         inputs.copy_from_slice(&self.candidates[i * w..i * w + w]);
         true
+    }
+
+    /// The inputs of one tick from the state in `m`.
+    fn draw(&mut self, m: &Machine, rng: &mut impl Rng, inputs: &mut [i64]) -> Result<(), NoInput> {
+        let p = m.program();
+        self.slots.clear();
+        self.slots.extend_from_slice(m.slots());
+        if self.space.listed().is_some_and(|(_, n)| n == 0)
+            || !self.state_checks.iter().all(|&e| self.holds(p, e))
+        {
+            self.set_inputs(inputs);
+            let assume = self.first_violated(p);
+            return Err(NoInput::Deadlock { assume });
+        }
+        let checked = !self.input_checks.is_empty() || !self.mixed_checks.is_empty();
+        let small = self.space.per_tick() <= MAX_ENUMERATED;
+        let tries = if !checked {
+            1
+        } else if small {
+            REJECTION_TRIES
+        } else {
+            MAX_TRIES
+        };
+        for _ in 0..tries {
+            self.propose(rng, inputs);
+            if !checked {
+                return Ok(());
+            }
+            self.set_inputs(inputs);
+            if self.allowed(p) {
+                return Ok(());
+            }
+        }
+        if small {
+            if self.enumerate(p, rng, inputs) {
+                return Ok(());
+            }
+            let assume = self.first_violated(p);
+            return Err(NoInput::Deadlock { assume });
+        }
+        let assume = self.first_violated(p);
+        Err(NoInput::NotFound { assume })
     }
 }
 
@@ -237,53 +296,14 @@ fn pick_weighted(rng: &mut impl Rng, cumulative: &[f64]) -> usize {
         .min(cumulative.len() - 1)
 }
 
-impl InputSource for RandomInputs<'_> {
+impl InputSource for RandomInputs {
     fn next(&mut self, tick: u64, machine: &Machine, inputs: &mut [i64]) -> Result<bool, NoInput> {
         if tick >= self.ticks {
             return Ok(false);
         }
-        self.scratch.load_state(machine.state());
-        if self.space.listed().is_some_and(|(_, n)| n == 0) {
-            self.set_inputs(inputs);
-            let assume = self.first_violated();
-            return Err(NoInput::Deadlock { assume });
-        }
-        let state_ok = {
-            let m = &mut self.scratch;
-            self.state_checks.iter().all(|&e| m.holds(e))
-        };
-        if !state_ok {
-            self.set_inputs(inputs);
-            let assume = self.first_violated();
-            return Err(NoInput::Deadlock { assume });
-        }
-        let checked = !self.input_checks.is_empty() || !self.mixed_checks.is_empty();
-        let small = self.space.per_tick() <= MAX_ENUMERATED;
-        let tries = if !checked {
-            1
-        } else if small {
-            REJECTION_TRIES
-        } else {
-            MAX_TRIES
-        };
-        for _ in 0..tries {
-            self.propose(inputs);
-            if !checked {
-                return Ok(true);
-            }
-            self.set_inputs(inputs);
-            if self.allowed() {
-                return Ok(true);
-            }
-        }
-        if small {
-            if self.enumerate(inputs) {
-                return Ok(true);
-            }
-            let assume = self.first_violated();
-            return Err(NoInput::Deadlock { assume });
-        }
-        let assume = self.first_violated();
-        Err(NoInput::NotFound { assume })
+        let solved = self
+            .solved
+            .get_or_insert_with(|| Solved::new(machine.program(), &self.rates));
+        solved.draw(machine, &mut self.rng, inputs).map(|()| true)
     }
 }

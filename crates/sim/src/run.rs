@@ -92,6 +92,9 @@ pub struct Options {
     pub coverage: bool,
     /// Do not record the trace (for long random runs that only want coverage or checks).
     pub no_trace: bool,
+    /// Go on after a property violation (benchmarks, coverage): the run ends as
+    /// [`Stop::Violation`] of the first one when all ticks ran.
+    pub keep_going: bool,
 }
 
 /// Where a run gets its inputs from.
@@ -201,6 +204,7 @@ pub fn run_streaming(
         .collect();
     let mut reached = unreached(program);
     let mut no_input = None;
+    let mut first_violation = None;
     let mut tick = 0u64;
     let stop = loop {
         match source.next(tick, &m, &mut inputs) {
@@ -221,10 +225,18 @@ pub fn run_streaming(
         if matches!(result, Ok(()) | Err(Stop::Violation { .. })) {
             sink.tick(tick, m.slots());
         }
-        if let Err(stop) = result {
-            break stop;
+        match result {
+            Err(v @ Stop::Violation { .. }) if opts.keep_going => {
+                first_violation.get_or_insert(v);
+            }
+            Err(stop) => break stop,
+            Ok(()) => {}
         }
         tick += 1;
+    };
+    let stop = match (stop, first_violation) {
+        (Stop::Completed, Some(v)) => v,
+        (stop, _) => stop,
     };
     Run {
         trace: Vec::new(),

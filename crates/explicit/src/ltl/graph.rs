@@ -4,7 +4,7 @@
 //! several positions; successors depend on the state alone.
 //!
 //! Built breadth-first with the IR interpreter and the same input enumeration and `assume`
-//! handling as the safety search (`crate::inputs`). States are stored bit-packed in one flat
+//! handling as the safety search (`statecheck_ir::assume`). States are stored bit-packed in one flat
 //! vector with a hash index; every edge keeps the first input vector (in enumeration order)
 //! that realises it, so a path is a scenario. Memory: the packed state, its index entry
 //! (about 40 bytes), 16 bytes per node and 8 bytes per distinct edge.
