@@ -23,6 +23,10 @@ use std::process::ExitCode;
 struct Cli {
     #[command(subcommand)]
     command: Command,
+    /// A library directory searched for imported files (after the importing file's own
+    /// directory; repeatable; `STATECHECK_PATH` directories come after these).
+    #[arg(long = "lib", value_name = "DIR", global = true)]
+    lib: Vec<String>,
 }
 
 #[derive(Subcommand)]
@@ -97,6 +101,7 @@ fn main() -> ExitCode {
 }
 
 fn run(cli: Cli) -> Result<u8> {
+    load::set_lib_dirs(cli.lib);
     match cli.command {
         Command::Check { model } => {
             let loaded = load::load(&model, true)?;

@@ -5,7 +5,6 @@ use crate::output;
 use crate::{write_out, Exit};
 use anyhow::{bail, Result};
 use clap::Args;
-use statecheck_base::LineIndex;
 use statecheck_ir::view::TraceView as Views;
 use statecheck_sim::{random::RandomInputs, scenario, Options, ScenarioInputs, Stop};
 
@@ -101,7 +100,7 @@ pub fn run(a: SimArgs) -> Result<u8> {
             ),
         )?;
     }
-    let (status, code, message) = describe_stop(&run.stop, &program, &loaded.source, &loaded.path);
+    let (status, code, message) = describe_stop(&run.stop, &program, &loaded.sources);
     if a.json {
         let ticks: Vec<serde_json::Value> = run
             .trace
@@ -123,7 +122,7 @@ pub fn run(a: SimArgs) -> Result<u8> {
             obj["result"]["property"] = serde_json::json!(error.kind.builtin_property());
         }
         if let (Some(counts), Some(_)) = (&run.coverage, &a.coverage) {
-            obj["coverage"] = output::coverage::to_json(&program, counts, &loaded.source);
+            obj["coverage"] = output::coverage::to_json(&program, counts, &loaded.sources);
         }
         write_out(None, &format!("{}\n", serde_json::to_string(&obj)?))?;
     } else if a.csv {
@@ -135,11 +134,11 @@ pub fn run(a: SimArgs) -> Result<u8> {
         if !a.quiet && !a.json {
             eprint!(
                 "{}",
-                output::coverage::summary(&program, counts, &loaded.source)
+                output::coverage::summary(&program, counts, &loaded.sources)
             );
         }
         if !file.is_empty() {
-            let v = output::coverage::to_json(&program, counts, &loaded.source);
+            let v = output::coverage::to_json(&program, counts, &loaded.sources);
             write_out(
                 Some(file),
                 &format!("{}\n", serde_json::to_string_pretty(&v)?),
@@ -156,18 +155,16 @@ pub fn run(a: SimArgs) -> Result<u8> {
 fn describe_stop(
     stop: &Stop,
     p: &statecheck_ir::Program,
-    source: &str,
-    path: &str,
+    sources: &statecheck_model::imports::Sources,
 ) -> (&'static str, u8, String) {
-    let idx = LineIndex::new(source);
     match stop {
         Stop::Completed => ("completed", 0, "run completed".into()),
         Stop::Violation { tick, property } => ("violated", 4, format!("property `{property}` violated at tick {tick}")),
         Stop::RuntimeError { tick, error } => {
-            let at = p.sites.get(error.site as usize).map(|s| {
-                let (l, c) = idx.line_col(s.span.start);
-                format!(" at {path}:{l}:{c}")
-            });
+            let at = p
+                .sites
+                .get(error.site as usize)
+                .map(|s| format!(" at {}", sources.position(s.span)));
             ("runtime_error", 1, format!("run-time error at tick {tick}: {}{}", p.describe_error(error), at.unwrap_or_default()))
         }
         Stop::AssumeViolated { tick, assume } => (

@@ -9,6 +9,7 @@
 
 mod chart;
 mod expr;
+pub mod imports;
 pub mod lint;
 pub mod model;
 pub mod ops;
@@ -213,7 +214,7 @@ fn collect_globals(file: &ast::File, g: &mut Globals, diags: &mut Vec<Diagnostic
                     g.fns.insert(f.name.name.clone(), (index, f.clone()));
                 }
             }
-            ast::Item::System(_) => {}
+            ast::Item::System(_) | ast::Item::Import(_) => {}
             ast::Item::Tick(t) => {
                 if let Some(prev) = tick_seen {
                     diags.push(
