@@ -74,7 +74,7 @@ fn a_library_file_is_not_found_without_the_search_path() {
 fn lib_flag_and_statecheck_path_find_the_library() {
     // Derived by hand in plant.sc: 3 states, 10 input vectors each; `follows` holds, `lit`
     // is reachable.
-    let want = (3, 30, "holds".to_string(), "reachable".to_string());
+    let want = (3, 30, "proved".to_string(), "reachable".to_string());
     let by_flag = verify(&[&app("plant.sc"), "--lib", "tests/imports/lib"], None);
     assert_eq!(stats(&by_flag), want, "{by_flag}");
     let by_env = verify(&[&app("plant.sc")], Some("/nonexistent:tests/imports/lib"));
