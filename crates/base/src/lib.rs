@@ -5,6 +5,7 @@
 //! them beside its result, and only the CLI renders them. This keeps the core crates free of
 //! I/O and lets tests compare diagnostics structurally or through the CLI's rendering.
 
+pub mod codes;
 mod diagnostic;
 mod span;
 

@@ -95,13 +95,47 @@ pub fn render_sources(sources: &Sources, diags: &[Diagnostic], color: bool) -> S
     String::from_utf8_lossy(&out).into_owned()
 }
 
-/// Print diagnostics to stderr, in color on a terminal.
+/// Print diagnostics to stderr, in color on a terminal (as JSON lines with
+/// `--message-format json`).
 pub fn eprint(path: &str, source: &str, diags: &[Diagnostic]) {
     eprint_sources(&single(path, source), diags);
 }
 
-/// Print diagnostics of a program of one or more files to stderr, in color on a terminal.
+/// A diagnostic with its spans made relative to the file of its primary span (secondary
+/// labels in other files are dropped), and that file.
+fn localise<'s>(sources: &'s Sources, d: &Diagnostic) -> Option<(&'s SourceFile, Diagnostic)> {
+    let (f, r) = place(sources, d.span)?;
+    let mut local = d.clone();
+    local.span = Span::new(r.start, r.end);
+    local.secondary = d
+        .secondary
+        .iter()
+        .filter_map(|l| {
+            let (g, r) = place(sources, l.span)?;
+            (g.start == f.start).then(|| statecheck_base::Label {
+                span: Span::new(r.start, r.end),
+                message: l.message.clone(),
+            })
+        })
+        .collect();
+    Some((f, local))
+}
+
+/// Print diagnostics of a program of one or more files to stderr, in color on a terminal
+/// (as JSON lines, each naming its file, with `--message-format json`).
 pub fn eprint_sources(sources: &Sources, diags: &[Diagnostic]) {
+    if crate::diag_json::is_json() {
+        let mut out = String::new();
+        for d in diags {
+            if let Some((f, local)) = localise(sources, d) {
+                let text = sources.file_text(f);
+                out.push_str(&crate::diag_json::to_json(&f.name, text, &local).to_string());
+                out.push('\n');
+            }
+        }
+        eprint!("{out}");
+        return;
+    }
     let color = std::io::stderr().is_terminal() && std::env::var_os("NO_COLOR").is_none();
     eprint!("{}", render_sources(sources, diags, color));
 }

@@ -5,10 +5,13 @@
 //! (0 ok, 1 model or run-time error, 2 usage error, 4 a property was violated in a run).
 
 mod diag;
+mod diag_json;
 mod export_cmd;
+mod fmt_cmd;
 mod gen_cmd;
 mod load;
 mod output;
+mod serve_cmd;
 mod sim_cmd;
 mod synth_cmd;
 mod verify_cmd;
@@ -27,6 +30,19 @@ struct Cli {
     /// directory; repeatable; `STATECHECK_PATH` directories come after these).
     #[arg(long = "lib", value_name = "DIR", global = true)]
     lib: Vec<String>,
+    /// How diagnostics are printed on standard error: `human` (rendered, the default) or
+    /// `json` (one JSON object per line; docs/tools.md).
+    #[arg(long, global = true, value_enum, default_value_t = MessageFormat::Human)]
+    message_format: MessageFormat,
+}
+
+/// The values of `--message-format`.
+#[derive(Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+enum MessageFormat {
+    /// Rendered for people.
+    Human,
+    /// One JSON object per diagnostic and line.
+    Json,
 }
 
 #[derive(Subcommand)]
@@ -55,6 +71,17 @@ enum Command {
     Export(export_cmd::ExportCommand),
     /// Synthesize a maximally permissive, controllable, nonblocking supervisor.
     Synth(synth_cmd::SynthArgs),
+    /// Serve the validation studio: a local web page that animates the charts.
+    Serve(serve_cmd::ServeArgs),
+    /// Rewrite model files in the canonical layout (`--check`: only report).
+    Fmt(fmt_cmd::FmtArgs),
+    /// Explain a diagnostic code (`statecheck explain E0111`); without a code, list them all.
+    Explain {
+        /// The code, e.g. E0111.
+        code: Option<String>,
+    },
+    /// Run the language server on standard input and output (for editors; docs/tools.md).
+    Lsp,
     /// Draw a system's charts as Graphviz DOT, optionally with coverage counts.
     Dot {
         /// The `.sc` model file.
@@ -102,6 +129,7 @@ fn main() -> ExitCode {
 
 fn run(cli: Cli) -> Result<u8> {
     load::set_lib_dirs(cli.lib);
+    diag_json::set_json(cli.message_format == MessageFormat::Json);
     match cli.command {
         Command::Check { model } => {
             let loaded = load::load(&model, true)?;
@@ -128,6 +156,13 @@ fn run(cli: Cli) -> Result<u8> {
         Command::Gen(args) => gen_cmd::run(args),
         Command::Export(c) => export_cmd::run(c),
         Command::Synth(args) => synth_cmd::run(args),
+        Command::Serve(args) => serve_cmd::run(args),
+        Command::Fmt(args) => fmt_cmd::run(args),
+        Command::Explain { code } => explain(code.as_deref()),
+        Command::Lsp => {
+            statecheck_lsp::serve_stdio()?;
+            Ok(0)
+        }
         Command::Dot {
             model,
             system,
@@ -154,6 +189,24 @@ fn run(cli: Cli) -> Result<u8> {
             write_out(output.as_deref(), &dot)?;
             Ok(0)
         }
+    }
+}
+
+/// `statecheck explain [CODE]`: the page of a code from the one table of codes, or the list.
+fn explain(code: Option<&str>) -> Result<u8> {
+    use statecheck_base::codes;
+    let Some(code) = code else {
+        for c in codes::CODES {
+            println!("{}  {}", c.code, c.title);
+        }
+        return Ok(0);
+    };
+    match codes::lookup(code) {
+        Some(c) => {
+            print!("{}", codes::page(c));
+            Ok(0)
+        }
+        None => anyhow::bail!("unknown diagnostic code `{code}`; `statecheck explain` lists them"),
     }
 }
 

@@ -16,7 +16,7 @@ pub struct SimArgs {
     /// The system (or chart) to simulate.
     #[arg(long)]
     system: Option<String>,
-    /// A scenario file: the inputs per tick.
+    /// A scenario file: the inputs per tick (`-`: standard input).
     #[arg(long, conflicts_with = "random")]
     scenario: Option<String>,
     /// Run N ticks of random inputs within their types and the `assume`s.
@@ -56,28 +56,40 @@ pub fn run(a: SimArgs) -> Result<u8> {
     };
     let run = match (&a.scenario, a.random) {
         (Some(path), _) => {
-            let text = std::fs::read_to_string(path)
-                .map_err(|e| anyhow::anyhow!("cannot read `{path}`: {e}"))?;
+            let text = if path == "-" {
+                let mut t = String::new();
+                std::io::Read::read_to_string(&mut std::io::stdin(), &mut t)
+                    .map_err(|e| anyhow::anyhow!("cannot read standard input: {e}"))?;
+                t
+            } else {
+                std::fs::read_to_string(path)
+                    .map_err(|e| anyhow::anyhow!("cannot read `{path}`: {e}"))?
+            };
             let sc = match scenario::parse(&text, &program) {
                 Ok(s) => s,
                 Err(errs) => {
-                    for e in &errs {
-                        let line = text.lines().nth(e.line - 1).unwrap_or("");
-                        eprintln!("error: {} ({path}:{}:{})", e.message, e.line, e.col);
-                        eprintln!("  | {line}");
-                        eprintln!(
-                            "  | {}{}",
-                            " ".repeat(e.col - 1),
-                            "^".repeat(e.len.min(line.len().saturating_sub(e.col - 1)).max(1))
-                        );
-                        if let Some(h) = &e.hint {
-                            eprintln!("  = help: {h}");
-                        }
-                    }
+                    let shown = if path == "-" {
+                        "<stdin>"
+                    } else {
+                        path.as_str()
+                    };
+                    crate::diag::eprint(shown, &text, &scenario_diagnostics(&text, &errs));
                     return Err(Exit(1).into());
                 }
             };
-            statecheck_sim::run(&program, &mut ScenarioInputs::new(&sc), opts)
+            if sc.loop_start.is_some() {
+                let l = statecheck_sim::lasso::run_lasso(&program, &sc, opts);
+                if let Some(why) = &l.broken {
+                    eprintln!("error: {why} ({path})");
+                    return Err(Exit(1).into());
+                }
+                if !l.fair {
+                    eprintln!("note: the lasso is not fair (a `fair` constraint fails on its loop); temporal properties were not evaluated");
+                }
+                l.run
+            } else {
+                statecheck_sim::run(&program, &mut ScenarioInputs::new(&sc), opts)
+            }
         }
         (None, Some(n)) => statecheck_sim::run(&program, &mut RandomInputs::new(a.seed, n), opts),
         (None, None) => {
@@ -173,4 +185,32 @@ fn describe_stop(
             format!("the inputs of tick {tick} violate `assume` #{} of the system (or no random inputs satisfy it)", assume + 1),
         ),
     }
+}
+
+/// Scenario errors as diagnostics (byte spans from their 1-based line and column), so that
+/// they render like the model's and follow `--message-format`.
+fn scenario_diagnostics(
+    text: &str,
+    errs: &[scenario::ScenarioError],
+) -> Vec<statecheck_base::Diagnostic> {
+    let starts: Vec<usize> = std::iter::once(0)
+        .chain(text.match_indices('\n').map(|(i, _)| i + 1))
+        .collect();
+    errs.iter()
+        .map(|e| {
+            let line_start = starts.get(e.line - 1).copied().unwrap_or(text.len());
+            let start = (line_start + e.col - 1).min(text.len());
+            let end = (start + e.len).min(text.len());
+            let mut d = statecheck_base::Diagnostic::error(
+                e.code,
+                e.message.clone(),
+                statecheck_base::Span::new(start, end),
+            )
+            .with_label("here");
+            if let Some(h) = &e.hint {
+                d = d.with_hint(h.clone());
+            }
+            d
+        })
+        .collect()
 }

@@ -26,6 +26,7 @@ mod error;
 mod expand;
 mod inputs;
 mod interval;
+pub mod ltl;
 mod native;
 pub mod pack;
 pub mod props;
@@ -273,8 +274,37 @@ pub fn verify(
     opts: &Options,
     progress: Option<&(dyn Fn(&Progress) + Sync)>,
 ) -> Result<Report, Error> {
+    let (temporal, safety) = ltl::split(program, &opts.properties);
+    let mut report = verify_safety(
+        program,
+        &Options {
+            properties: safety.clone(),
+            ..opts.clone()
+        },
+        progress,
+        safety.is_empty() && !temporal.is_empty(),
+    )?;
+    if opts.properties.is_empty() || !temporal.is_empty() {
+        let sel = (!opts.properties.is_empty()).then_some(temporal.as_slice());
+        let (results, _) = ltl::check(program, sel, opts);
+        report.results.extend(results);
+    }
+    Ok(report)
+}
+
+/// The safety part of [`verify`]: every non-temporal property selected (none when `none`).
+fn verify_safety(
+    program: &Program,
+    opts: &Options,
+    progress: Option<&(dyn Fn(&Progress) + Sync)>,
+    none: bool,
+) -> Result<Report, Error> {
     let start = std::time::Instant::now();
-    let mut specs = props::select(program, &opts.properties)?;
+    let mut specs = if none {
+        Vec::new()
+    } else {
+        props::select(program, &opts.properties)?
+    };
     let mut init = statecheck_ir::Machine::new(program);
     props::mark_per_state(program, &mut specs, |c| expand::decides(&mut init, c));
     let mut space = InputSpace::new(program);
@@ -314,6 +344,7 @@ pub fn verify(
                 counterexample: None,
                 error: None,
                 note: None,
+                loop_start: None,
             })
             .collect();
         stats.limit = Some(limit);
@@ -491,6 +522,7 @@ fn run<K: Key>(
                         counterexample,
                         error: f.error,
                         note,
+                        loop_start: None,
                     }
                 }
                 None => {
@@ -513,6 +545,7 @@ fn run<K: Key>(
                         counterexample: None,
                         error: None,
                         note: None,
+                        loop_start: None,
                     }
                 }
             }

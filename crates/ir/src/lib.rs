@@ -13,6 +13,7 @@ mod interp;
 mod layout;
 pub mod lower;
 mod program;
+pub mod temporal;
 pub mod verdict;
 pub mod view;
 mod vm;

@@ -390,6 +390,11 @@ pub struct Program {
     pub assumes: Vec<ExprId>,
     /// Properties, checked on the state after each tick.
     pub properties: Vec<Property>,
+    /// Temporal properties (`ltl`, `ctl`, unbounded `respond`, `nonblocking`), decided on
+    /// runs rather than states (`crate::temporal`).
+    pub temporal: Vec<crate::temporal::TemporalProperty>,
+    /// Fairness constraints on the runs of the temporal properties.
+    pub fairness: Vec<crate::temporal::Fairness>,
     /// The `Started` slot.
     pub started: SlotId,
     /// Number of expression locals (see [`Node::Let`]).

@@ -67,6 +67,12 @@ pub enum PropKind {
     Observer,
     /// A built-in property (no run-time error of a kind).
     Builtin,
+    /// `ltl NAME: formula;`
+    Ltl,
+    /// `ctl NAME: formula;`
+    Ctl,
+    /// `nonblocking NAME: expr;`
+    Nonblocking,
 }
 
 impl PropKind {
@@ -78,6 +84,9 @@ impl PropKind {
             PropKind::Respond => "respond",
             PropKind::Observer => "observer",
             PropKind::Builtin => "builtin",
+            PropKind::Ltl => "ltl",
+            PropKind::Ctl => "ctl",
+            PropKind::Nonblocking => "nonblocking",
         }
     }
 
@@ -226,6 +235,9 @@ pub struct PropResult {
     pub error: Option<RuntimeError>,
     /// Why a counterexample is missing, if it is.
     pub note: Option<String>,
+    /// For a lasso counterexample of a temporal property: the first tick of the loop (the
+    /// state after tick `loop_start - 1` recurs after the last tick).
+    pub loop_start: Option<u64>,
 }
 
 impl PropResult {
@@ -239,6 +251,7 @@ impl PropResult {
             counterexample: None,
             error: None,
             note: None,
+            loop_start: None,
         }
     }
 }

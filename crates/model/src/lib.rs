@@ -7,8 +7,10 @@
 //! past errors so one run shows them all. Design-rule checks (the Modelica paper's §3.1) live in
 //! [`lint`]. It decides nothing about *how* a step executes: that is the `ir` crate's job.
 
+mod cascade;
 mod chart;
 mod expr;
+pub mod formula;
 pub mod imports;
 pub mod lint;
 pub mod model;
@@ -127,6 +129,7 @@ pub fn check(file: &ast::File) -> (Model, Vec<Diagnostic>) {
         tick_ms: globals_ref.tick_ms,
     };
     let mut diags = ck.sink.diags;
+    cascade::suppress(file, &mut diags);
     if !diags.iter().any(Diagnostic::is_error) {
         diags.extend(lint::lint(&model));
     }

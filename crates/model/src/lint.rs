@@ -15,10 +15,12 @@
 //! | W0307 | a choice without `else` whose guards can all be false |
 //! | W0308 | an unused variable or event (input never read, output never written, ...) |
 //! | W0309 | a local variable or event that is written but never read |
+//! | W0310 | a transition without a target that suppresses its state's `during` action |
 //!
 //! `docs/lints.md` describes each code with an example.
 
 mod cover;
+mod during;
 mod reach;
 mod trans;
 mod usage;
@@ -39,6 +41,7 @@ pub fn lint(model: &Model) -> Vec<Diagnostic> {
     for id in 0..model.charts.len() as ChartId {
         reach::check(&cx, id, &mut out);
         trans::check(&cx, id, &mut out);
+        during::check(&cx, id, &mut out);
     }
     usage::check(&cx, &mut out);
     // A junction reached from several transitions is expanded into each of them: report each

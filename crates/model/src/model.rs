@@ -331,6 +331,30 @@ pub enum PropertyKind {
         /// The bound in ticks.
         within: i64,
     },
+    /// Whenever `trigger` holds, `response` holds then or later (`respond` without a bound).
+    RespondEventually {
+        /// The trigger condition.
+        trigger: Expr,
+        /// The response condition.
+        response: Expr,
+    },
+    /// An LTL formula every run satisfies.
+    Ltl(crate::formula::Formula),
+    /// A CTL formula every initial state satisfies.
+    Ctl(crate::formula::Formula),
+    /// From every reachable state, a state where `expr` holds stays reachable.
+    Nonblocking {
+        /// The marked condition.
+        expr: Expr,
+    },
+    /// A fairness constraint on the runs temporal properties speak of: `expr` holds infinitely
+    /// often (justice), or, with a `trigger`, if `trigger` holds infinitely often (compassion).
+    Fair {
+        /// The compassion trigger.
+        trigger: Option<Expr>,
+        /// What must hold infinitely often.
+        expr: Expr,
+    },
 }
 
 /// One chart instance of a system (instance arrays are flattened: `fam[0]`, `fam[1]`, ...).

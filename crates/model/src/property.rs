@@ -1,6 +1,7 @@
-//! Checking property declarations (invariant, reachable, respond).
+//! Checking property declarations (invariant, reachable, respond, and the temporal ones).
 
 use crate::expr::ExprChecker;
+use crate::formula::{self, Logic};
 use crate::model::{Property, PropertyKind};
 use crate::scope::Scope;
 use statecheck_base::Diagnostic;
@@ -45,6 +46,25 @@ pub(crate) fn check_properties(
                         within: n.clamp(0, 1_000_000),
                     }
                 }
+                ast::PropertyKind::RespondEventually { trigger, response } => {
+                    PropertyKind::RespondEventually {
+                        trigger: ck.check_bool(scope, trigger),
+                        response: ck.check_bool(scope, response),
+                    }
+                }
+                ast::PropertyKind::Ltl { formula } => {
+                    PropertyKind::Ltl(formula::check(ck, scope, formula, Logic::Ltl))
+                }
+                ast::PropertyKind::Ctl { formula } => {
+                    PropertyKind::Ctl(formula::check(ck, scope, formula, Logic::Ctl))
+                }
+                ast::PropertyKind::Nonblocking { expr } => PropertyKind::Nonblocking {
+                    expr: ck.check_bool(scope, expr),
+                },
+                ast::PropertyKind::Fair { trigger, expr } => PropertyKind::Fair {
+                    trigger: trigger.as_ref().map(|t| ck.check_bool(scope, t)),
+                    expr: ck.check_bool(scope, expr),
+                },
             };
             Property {
                 name: p.name.name.clone(),

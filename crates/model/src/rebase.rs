@@ -42,9 +42,18 @@ pub(crate) fn property(p: &mut Property, inst: u32) {
         PropertyKind::Reachable { expr: e } => expr(e, inst),
         PropertyKind::Respond {
             trigger, response, ..
-        } => {
+        }
+        | PropertyKind::RespondEventually { trigger, response } => {
             expr(trigger, inst);
             expr(response, inst);
+        }
+        PropertyKind::Ltl(f) | PropertyKind::Ctl(f) => f.atoms_mut(&mut |e| expr(e, inst)),
+        PropertyKind::Nonblocking { expr: e } => expr(e, inst),
+        PropertyKind::Fair { trigger, expr: e } => {
+            if let Some(t) = trigger {
+                expr(t, inst);
+            }
+            expr(e, inst);
         }
     }
 }

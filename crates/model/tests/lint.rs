@@ -137,6 +137,19 @@ fn w0309_written_but_never_read() {
 }
 
 #[test]
+fn w0310_internal_transition_suppresses_during() {
+    // Line 8: the chart's own `on reset / {..};` against the chart's `during` (line 7);
+    // line 11: `A`'s `on bump [n < 9] / {..};` against `A`'s `during` (line 10); line 12
+    // has a target and is not reported.
+    assert_eq!(
+        lints("w0310_during_suppressed.sc"),
+        [("W0310", 8), ("W0310", 11)]
+    );
+    assert_eq!(secondary_line("w0310_during_suppressed.sc", "W0310", 11), 9);
+    assert_eq!(lints("w0310_clean.sc"), []);
+}
+
+#[test]
 fn realistic_model_is_clean() {
     let (diags, _) = check("realistic_clean.sc");
     assert!(diags.is_empty(), "{diags:#?}");

@@ -4,9 +4,12 @@
 //! Nothing here decides what a tick does: runs drive [`statecheck_ir::Machine`]. The crate does
 //! no I/O; the CLI reads scenario files and renders traces.
 
+pub mod lasso;
 pub mod random;
 pub mod run;
 pub mod scenario;
 
-pub use run::{run, InputSource, Options, Run, ScenarioInputs, Stop, TickRecord};
+pub use run::{
+    run, tick_once, unreached, InputSource, Options, Run, ScenarioInputs, Stop, TickRecord,
+};
 pub use scenario::{Scenario, ScenarioError};

@@ -116,12 +116,7 @@ pub fn run(program: &Program, source: &mut dyn InputSource, opts: Options) -> Ru
         .collect();
     let mut trace = Vec::new();
     let mut all_inputs = Vec::new();
-    let mut reached: Vec<(String, Option<u64>)> = program
-        .properties
-        .iter()
-        .filter(|p| matches!(p.kind, PropertyKind::Reachable { .. }))
-        .map(|p| (p.name.clone(), None))
-        .collect();
+    let mut reached = unreached(program);
     let mut tick = 0u64;
     let stop = loop {
         match source.next(tick, &m, &mut inputs) {
@@ -129,31 +124,19 @@ pub fn run(program: &Program, source: &mut dyn InputSource, opts: Options) -> Ru
             Ok(false) => break Stop::Completed,
             Err(assume) => break Stop::AssumeViolated { tick, assume },
         }
-        for (k, inp) in program.inputs.iter().enumerate() {
-            m.set(inp.slot, inputs[k]);
-        }
-        if let Some(a) = program
-            .assumes
-            .iter()
-            .position(|a| m.eval(*a).map_or(true, |v| v == 0))
-        {
-            break Stop::AssumeViolated { tick, assume: a };
-        }
-        all_inputs.push(inputs.clone());
-        if let Err(error) = m.step() {
-            break Stop::RuntimeError { tick, error };
-        }
-        if !opts.no_trace {
+        let result = tick_once(program, &mut m, tick, &inputs, &mut reached, &mut || {
+            all_inputs.push(inputs.clone());
+        });
+        // The violating tick is part of the trace; a failed or refused one is not.
+        let recorded = matches!(result, Ok(()) | Err(Stop::Violation { .. }));
+        if recorded && !opts.no_trace {
             trace.push(TickRecord {
                 tick,
                 slots: m.slots().to_vec(),
             });
         }
-        if let Some(name) = first_violation(program, &mut m, tick, &mut reached) {
-            break Stop::Violation {
-                tick,
-                property: name,
-            };
+        if let Err(stop) = result {
+            break stop;
         }
         tick += 1;
     };
@@ -164,6 +147,57 @@ pub fn run(program: &Program, source: &mut dyn InputSource, opts: Options) -> Ru
         coverage: m.coverage().map(<[u64]>::to_vec),
         inputs: all_inputs,
     }
+}
+
+/// One tick of a run, as [`run`] does it: set the inputs (one value per input, in
+/// [`Program::inputs`] order), check the `assume`s, step, then check the properties on the
+/// new state and record the `reachable` ones that hold (`reached` has one entry per
+/// `reachable` property, in declaration order).
+///
+/// `accepted` is called once the inputs satisfy the `assume`s, before the step (`run` records
+/// the inputs there). On `Err`, the stop says why the run ends: after
+/// [`Stop::Violation`] the machine holds the violating state (the trace includes that tick);
+/// after [`Stop::RuntimeError`] it holds the slots at the error; after
+/// [`Stop::AssumeViolated`] nothing was stepped.
+pub fn tick_once(
+    program: &Program,
+    m: &mut Machine,
+    tick: u64,
+    inputs: &[i64],
+    reached: &mut [(String, Option<u64>)],
+    accepted: &mut dyn FnMut(),
+) -> Result<(), Stop> {
+    for (k, inp) in program.inputs.iter().enumerate() {
+        m.set(inp.slot, inputs[k]);
+    }
+    if let Some(a) = program
+        .assumes
+        .iter()
+        .position(|a| m.eval(*a).map_or(true, |v| v == 0))
+    {
+        return Err(Stop::AssumeViolated { tick, assume: a });
+    }
+    accepted();
+    if let Err(error) = m.step() {
+        return Err(Stop::RuntimeError { tick, error });
+    }
+    if let Some(name) = first_violation(program, m, tick, reached) {
+        return Err(Stop::Violation {
+            tick,
+            property: name,
+        });
+    }
+    Ok(())
+}
+
+/// The `reachable` properties of a program, none reached yet (the `reached` of [`tick_once`]).
+pub fn unreached(program: &Program) -> Vec<(String, Option<u64>)> {
+    program
+        .properties
+        .iter()
+        .filter(|p| matches!(p.kind, PropertyKind::Reachable { .. }))
+        .map(|p| (p.name.clone(), None))
+        .collect()
 }
 
 /// The first property (in declaration order) that the machine's current state violates;

@@ -18,11 +18,16 @@ use statecheck_ir::Program;
 pub struct Scenario {
     /// For each tick, `(index into Program::inputs, value)` pairs.
     pub ticks: Vec<Vec<(usize, i64)>>,
+    /// A lasso's first loop tick (a `loop:` line before it): after the last tick the state
+    /// after tick `loop_start - 1` recurs and the loop repeats forever (`crate::lasso`).
+    pub loop_start: Option<usize>,
 }
 
 /// A problem in a scenario file.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct ScenarioError {
+    /// The stable diagnostic code (E08xx, `statecheck explain`).
+    pub code: &'static str,
     /// 1-based line.
     pub line: usize,
     /// 1-based column.
@@ -42,19 +47,38 @@ pub const MAX_TICKS: usize = 100_000_000;
 pub fn parse(text: &str, program: &Program) -> Result<Scenario, Vec<ScenarioError>> {
     let mut ticks = Vec::new();
     let mut errors = Vec::new();
+    let mut loop_start: Option<usize> = None;
     for (ln, raw) in text.lines().enumerate() {
         let line_no = ln + 1;
         let content = raw.split('#').next().unwrap_or("");
         if content.trim().is_empty() {
             continue;
         }
-        let err = |col: usize, len: usize, message: String, hint: Option<String>| ScenarioError {
-            line: line_no,
-            col: col + 1,
-            len: len.max(1),
-            message,
-            hint,
-        };
+        if content.trim() == "loop:" {
+            if loop_start.is_some() {
+                errors.push(ScenarioError {
+                    code: "E0810",
+                    line: line_no,
+                    col: 1,
+                    len: raw.len().max(1),
+                    message: "a second `loop:` line".into(),
+                    hint: Some("a scenario has at most one loop, at its end".into()),
+                });
+            }
+            loop_start = Some(ticks.len());
+            continue;
+        }
+        let err =
+            |code: &'static str, col: usize, len: usize, message: String, hint: Option<String>| {
+                ScenarioError {
+                    code,
+                    line: line_no,
+                    col: col + 1,
+                    len: len.max(1),
+                    message,
+                    hint,
+                }
+            };
         // `* N` repeat suffix.
         let (body, repeat) = match content.rfind('*') {
             Some(star) => {
@@ -63,6 +87,7 @@ pub fn parse(text: &str, program: &Program) -> Result<Scenario, Vec<ScenarioErro
                     Ok(n) if n >= 1 => (&content[..star], n),
                     _ => {
                         errors.push(err(
+                            "E0801",
                             star,
                             content.len() - star,
                             format!("bad repeat count `{n_text}`"),
@@ -84,6 +109,7 @@ pub fn parse(text: &str, program: &Program) -> Result<Scenario, Vec<ScenarioErro
                 let item_t = item.trim();
                 if item_t.is_empty() {
                     errors.push(err(
+                        "E0802",
                         start,
                         1,
                         "empty item".into(),
@@ -97,8 +123,8 @@ pub fn parse(text: &str, program: &Program) -> Result<Scenario, Vec<ScenarioErro
                 };
                 let idx = match resolve(program, name) {
                     Ok(i) => i,
-                    Err((msg, hint)) => {
-                        errors.push(err(start, name.len(), msg, hint));
+                    Err((code, msg, hint)) => {
+                        errors.push(err(code, start, name.len(), msg, hint));
                         continue;
                     }
                 };
@@ -106,21 +132,22 @@ pub fn parse(text: &str, program: &Program) -> Result<Scenario, Vec<ScenarioErro
                 let slot = &program.slots[input.slot as usize];
                 let v = match (value, input.is_event) {
                     (None, true) => 1,
-                    (Some(v), true) => match v {
-                        "true" | "1" => 1,
-                        "false" | "0" => 0,
-                        _ => {
-                            errors.push(err(
-                                start,
-                                item_t.len(),
-                                format!("event `{}` is present or absent, not `{v}`", input.name),
-                                Some(format!("write just `{name}` to make it present",)),
-                            ));
-                            continue;
-                        }
-                    },
+                    (Some(v), true) => {
+                        // An event is present or absent: it takes no value, not even `true`.
+                        errors.push(err(
+                            "E0805",
+                            start,
+                            item_t.len(),
+                            format!("event `{}` takes no value, found `{v}`", input.name),
+                            Some(format!(
+                                "write just `{name}` to make it present in this tick, or leave it out"
+                            )),
+                        ));
+                        continue;
+                    }
                     (None, false) => {
                         errors.push(err(
+                            "E0806",
                             start,
                             name.len(),
                             format!("`{}` is not an event; give it a value", input.name),
@@ -128,10 +155,29 @@ pub fn parse(text: &str, program: &Program) -> Result<Scenario, Vec<ScenarioErro
                         ));
                         continue;
                     }
+                    // A bool takes `true` or `false`, not a number (the IR's parser, which
+                    // also reads traces, accepts `1` and `0`).
+                    (Some(v), false)
+                        if matches!(slot.display, statecheck_ir::ValueKind::Bool)
+                            && !matches!(v, "true" | "false") =>
+                    {
+                        errors.push(err(
+                            "E0808",
+                            start,
+                            item_t.len(),
+                            format!("`{}` is a `bool`, found `{v}`", input.name),
+                            Some(match suggest(v, vec!["true", "false"]) {
+                                Some(s) => format!("did you mean `{s}`?"),
+                                None => "`true` or `false`".into(),
+                            }),
+                        ));
+                        continue;
+                    }
                     (Some(v), false) => match slot.display.parse(v) {
                         Some(x) if x >= slot.lo && x <= slot.hi => x,
                         Some(x) => {
                             errors.push(err(
+                                "E0807",
                                 start,
                                 item_t.len(),
                                 format!(
@@ -150,7 +196,12 @@ pub fn parse(text: &str, program: &Program) -> Result<Scenario, Vec<ScenarioErro
                                 statecheck_ir::ValueKind::Bool => "`true` or `false`".into(),
                                 statecheck_ir::ValueKind::Int => "an integer".into(),
                             };
+                            let hint = match suggest(v, slot_names(&slot.display)) {
+                                Some(s) => format!("did you mean `{s}`?"),
+                                None => hint,
+                            };
                             errors.push(err(
+                                "E0808",
                                 start,
                                 item_t.len(),
                                 format!("`{v}` is not a value of `{}`", input.name),
@@ -165,6 +216,7 @@ pub fn parse(text: &str, program: &Program) -> Result<Scenario, Vec<ScenarioErro
         }
         if ticks.len().saturating_add(repeat) > MAX_TICKS {
             errors.push(err(
+                "E0809",
                 0,
                 content.len(),
                 format!("the scenario would exceed {MAX_TICKS} ticks"),
@@ -177,14 +229,26 @@ pub fn parse(text: &str, program: &Program) -> Result<Scenario, Vec<ScenarioErro
         }
     }
     if errors.is_empty() {
-        Ok(Scenario { ticks })
+        if loop_start.is_some_and(|k| k == 0 || k >= ticks.len()) {
+            return Err(vec![ScenarioError {
+                code: "E0811",
+                line: 1,
+                col: 1,
+                len: 1,
+                message:
+                    "the `loop:` line must follow the first tick and precede at least one tick"
+                        .into(),
+                hint: Some("tick 0 only initialises, so a loop starts at tick 1 or later".into()),
+            }]);
+        }
+        Ok(Scenario { ticks, loop_start })
     } else {
         Err(errors)
     }
 }
 
 /// Find an input by `instance.var` or by an unambiguous bare `var`.
-fn resolve(program: &Program, name: &str) -> Result<usize, (String, Option<String>)> {
+fn resolve(program: &Program, name: &str) -> Result<usize, (&'static str, String, Option<String>)> {
     if let Some(i) = program.inputs.iter().position(|inp| inp.name == name) {
         return Ok(i);
     }
@@ -203,16 +267,24 @@ fn resolve(program: &Program, name: &str) -> Result<usize, (String, Option<Strin
                 .slots
                 .iter()
                 .any(|s| s.name == name || s.name.rsplit('.').next() == Some(name));
-            let hint = if is_var {
+            let names: Vec<&str> = program
+                .inputs
+                .iter()
+                .flat_map(|i| [i.name.as_str(), i.name.rsplit('.').next().unwrap_or("")])
+                .collect();
+            let hint = if let Some(s) = suggest(name, names).filter(|_| !is_var) {
+                Some(format!("did you mean `{s}`?"))
+            } else if is_var {
                 Some(format!("`{name}` is not a free input (it is computed or connected); the free inputs are: {}", known.join(", ")))
             } else if known.is_empty() {
                 Some("this system has no free inputs".into())
             } else {
                 Some(format!("the free inputs are: {}", known.join(", ")))
             };
-            Err((format!("unknown input `{name}`"), hint))
+            Err(("E0803", format!("unknown input `{name}`"), hint))
         }
         many => Err((
+            "E0804",
             format!("`{name}` is ambiguous"),
             Some(format!(
                 "qualify it: {}",
@@ -223,6 +295,42 @@ fn resolve(program: &Program, name: &str) -> Result<usize, (String, Option<Strin
             )),
         )),
     }
+}
+
+/// The literal names of an enum display (none for other kinds).
+fn slot_names(d: &statecheck_ir::ValueKind) -> Vec<&str> {
+    match d {
+        statecheck_ir::ValueKind::Enum(names) => names.iter().map(String::as_str).collect(),
+        _ => Vec::new(),
+    }
+}
+
+/// The candidate closest to `word` when it is close enough to be a likely misspelling
+/// (edit distance at most 1 for words of up to three characters, 2 for longer ones).
+fn suggest<'c>(word: &str, candidates: Vec<&'c str>) -> Option<&'c str> {
+    let limit = if word.chars().count() >= 4 { 2 } else { 1 };
+    candidates
+        .into_iter()
+        .filter(|c| !c.is_empty() && *c != word)
+        .map(|c| (edit_distance(word, c), c))
+        .filter(|(d, _)| *d <= limit)
+        .min_by_key(|(d, c)| (*d, *c))
+        .map(|(_, c)| c)
+}
+
+/// Levenshtein distance over characters.
+fn edit_distance(a: &str, b: &str) -> usize {
+    let b: Vec<char> = b.chars().collect();
+    let mut prev: Vec<usize> = (0..=b.len()).collect();
+    for (i, ca) in a.chars().enumerate() {
+        let mut cur = vec![i + 1];
+        for (j, cb) in b.iter().enumerate() {
+            let sub = prev[j] + usize::from(ca != *cb);
+            cur.push(sub.min(prev[j + 1] + 1).min(cur[j] + 1));
+        }
+        prev = cur;
+    }
+    prev[b.len()]
 }
 
 /// Write a scenario in the canonical format: qualified names, held inputs written only when
@@ -256,11 +364,19 @@ pub fn format(s: &Scenario, program: &Program) -> String {
     }
     let mut i = 0;
     while i < lines.len() {
+        if s.loop_start == Some(i) {
+            out.push_str("loop:\n");
+        }
         let mut j = i + 1;
+        // A fold never crosses the loop's start.
+        let stop = match s.loop_start {
+            Some(k) if k > i => k,
+            _ => lines.len(),
+        };
         // Only fold lines that are pure repeats: event lines, or `-`.
         let foldable =
             lines[i] == "-" || s.ticks[i].iter().all(|(k, _)| program.inputs[*k].is_event);
-        while foldable && j < lines.len() && lines[j] == lines[i] {
+        while foldable && j < stop && lines[j] == lines[i] {
             j += 1;
         }
         if j - i > 1 {
@@ -300,5 +416,24 @@ pub fn from_input_vectors(program: &Program, vectors: &[Vec<i64>]) -> Scenario {
             changes
         })
         .collect();
-    Scenario { ticks }
+    Scenario {
+        ticks,
+        loop_start: None,
+    }
+}
+
+/// A lasso scenario: like [`from_input_vectors`], with a `loop:` before tick `loop_start`
+/// whose first tick writes every held input, so that repeating the loop repeats its inputs.
+pub fn from_lasso(program: &Program, vectors: &[Vec<i64>], loop_start: usize) -> Scenario {
+    let mut s = from_input_vectors(program, vectors);
+    if let (Some(tick), Some(vec)) = (s.ticks.get_mut(loop_start), vectors.get(loop_start)) {
+        tick.clear();
+        for (k, inp) in program.inputs.iter().enumerate() {
+            if !inp.is_event || vec[k] != 0 {
+                tick.push((k, vec[k]));
+            }
+        }
+    }
+    s.loop_start = Some(loop_start);
+    s
 }

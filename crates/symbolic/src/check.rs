@@ -239,6 +239,7 @@ pub fn decide(
         counterexample: None,
         error: None,
         note: None,
+        loop_start: None,
     };
     let mut reason = None;
     match out {

@@ -5,6 +5,8 @@
 
 use statecheck_base::Span;
 
+pub use crate::formula::{Formula, Quant, TempBin, TempOp};
+
 /// An identifier with its span.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct Ident {
@@ -657,6 +659,37 @@ pub enum PropertyKind {
         response: Expr,
         /// The bound in ticks.
         within: Expr,
+    },
+    /// `respond NAME: trigger => response;` (no bound: the response must come eventually).
+    RespondEventually {
+        /// When this holds ...
+        trigger: Expr,
+        /// ... this must hold then or later.
+        response: Expr,
+    },
+    /// `ltl NAME: formula;`
+    Ltl {
+        /// The LTL formula every run must satisfy.
+        formula: Formula,
+    },
+    /// `ctl NAME: formula;`
+    Ctl {
+        /// The CTL formula the initial states must satisfy.
+        formula: Formula,
+    },
+    /// `nonblocking NAME: expr;` (from every reachable state a state where `expr` holds
+    /// stays reachable: `AG EF expr`).
+    Nonblocking {
+        /// The marked condition.
+        expr: Expr,
+    },
+    /// `fair NAME: expr;` (justice) or `fair NAME: trigger => expr;` (compassion): a fairness
+    /// constraint on the runs the temporal properties speak of.
+    Fair {
+        /// For compassion: runs where this holds infinitely often ...
+        trigger: Option<Expr>,
+        /// ... (or every run, for justice) must have this hold infinitely often.
+        expr: Expr,
     },
 }
 

@@ -330,21 +330,37 @@ pub struct Token {
 /// Split `source` into tokens (ending with [`Tok::Eof`]), appending lexical errors to `diags`.
 #[cfg(test)]
 pub fn lex(source: &str, diags: &mut Vec<Diagnostic>) -> Vec<Token> {
-    lex_from(source, 0, diags)
+    lex_with_comments(source, diags).0
+}
+
+/// [`lex`], also returning the spans of the comments (`// …` without its newline, `/* … */`)
+/// in textual order: the trivia the formatter keeps.
+pub fn lex_with_comments(source: &str, diags: &mut Vec<Diagnostic>) -> (Vec<Token>, Vec<Span>) {
+    lex_from_with_comments(source, 0, diags)
 }
 
 /// Like [`lex`], starting at byte `start` of `source` (spans stay offsets into `source`).
 pub fn lex_from(source: &str, start: usize, diags: &mut Vec<Diagnostic>) -> Vec<Token> {
+    lex_from_with_comments(source, start, diags).0
+}
+
+/// [`lex_with_comments`] from byte `start` of `source` on.
+pub fn lex_from_with_comments(
+    source: &str,
+    start: usize,
+    diags: &mut Vec<Diagnostic>,
+) -> (Vec<Token>, Vec<Span>) {
     let mut lx = Lexer {
         src: source,
         bytes: source.as_bytes(),
         pos: start.min(source.len()),
         toks: Vec::new(),
+        comments: Vec::new(),
         diags,
         bad_start: None,
     };
     lx.run();
-    lx.toks
+    (lx.toks, lx.comments)
 }
 
 struct Lexer<'a, 'd> {
@@ -352,6 +368,7 @@ struct Lexer<'a, 'd> {
     bytes: &'a [u8],
     pos: usize,
     toks: Vec<Token>,
+    comments: Vec<Span>,
     diags: &'d mut Vec<Diagnostic>,
     /// Start of the current run of unexpected characters, reported as one diagnostic.
     bad_start: Option<usize>,
@@ -404,9 +421,11 @@ impl Lexer<'_, '_> {
                 while self.pos < self.bytes.len() && self.bytes[self.pos] != b'\n' {
                     self.pos += 1;
                 }
+                self.comments.push(Span::new(start, self.pos));
             } else if b == b'/' && self.peek(1) == b'*' {
                 self.flush_bad();
                 self.block_comment();
+                self.comments.push(Span::new(start, self.pos));
             } else if is_ident_start(b) {
                 self.flush_bad();
                 while self.pos < self.bytes.len() && is_ident_continue(self.bytes[self.pos]) {

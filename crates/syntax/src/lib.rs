@@ -12,6 +12,8 @@
 //! hand-written to give precise messages and hints (e.g. `=` in a guard suggests `==`).
 
 pub mod ast;
+pub mod format;
+mod formula;
 mod lexer;
 mod parser;
 

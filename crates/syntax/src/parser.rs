@@ -29,11 +29,13 @@
 //! | E0019 | `if` expression used as an operand without parentheses |
 //! | E0020 | missing `return` in a function body |
 //! | E0021 | malformed `import`: no quoted path, or a bad name list |
+//! | E0030 | malformed CTL until: `A[`/`E[` without `U` |
 
 mod body;
 mod expr;
 mod imports;
 mod items;
+mod temporal;
 
 use crate::ast;
 use crate::lexer::{Kw, Tok, Token};

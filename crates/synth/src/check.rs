@@ -18,6 +18,7 @@
 //!
 //! It shares no code with the synthesis fixpoints: it walks the closed loop's own graph.
 
+use crate::error::Error;
 use crate::problem::{EventId, Kind, Problem};
 use statecheck_ir::{Machine, Program, ValueKind};
 use statecheck_model::Model;
@@ -43,21 +44,21 @@ pub struct Report {
 pub const LIMIT: usize = 5_000_000;
 
 /// Check the supervisor `program` (a system of `model`) against the plant of `p`.
-pub fn check(p: &Problem, model: &Model, program: &Program) -> Result<Report, String> {
+pub fn check(p: &Problem, model: &Model, program: &Program) -> Result<Report, Error> {
     let free: Vec<_> = program.inputs.iter().collect();
     let [input] = free.as_slice() else {
-        return Err(format!(
+        return Err(Error::supervisor(format!(
             "the supervisor system must have exactly one free input (the proposed event); it has {}",
             free.len()
-        ));
+        )));
     };
     let names = match &program.slots[input.slot as usize].display {
         ValueKind::Enum(n) => n.clone(),
         _ => {
-            return Err(format!(
+            return Err(Error::supervisor(format!(
                 "input `{}` is not of an event enum type",
                 input.name
-            ))
+            )))
         }
     };
     let mut fire_slot = None;
@@ -184,7 +185,9 @@ pub fn check(p: &Problem, model: &Model, program: &Program) -> Result<Report, St
                 Some(j) => *j,
                 None => {
                     if nodes.len() >= LIMIT {
-                        return Err(format!("the closed loop exceeds {LIMIT} states"));
+                        return Err(Error::supervisor(format!(
+                            "the closed loop exceeds {LIMIT} states"
+                        )));
                     }
                     let j = nodes.len();
                     index.insert(node.clone(), j);

@@ -13,6 +13,7 @@
 //!   tick, rule R2), with invariants (mirrors agree with the plant charts; the `never`
 //!   requirements) and a `reachable` property for the marked states.
 
+use crate::encode::chain;
 use crate::problem::{Kind, Pred, Problem};
 use crate::Supervisor;
 use std::fmt::Write;
@@ -115,7 +116,7 @@ pub fn emit(p: &Problem, sup: &Supervisor, source: &str) -> String {
             if parts.is_empty() {
                 "true".to_string()
             } else {
-                parts.join(" && ")
+                chain(&parts, " && ")
             }
         );
     }
@@ -172,7 +173,12 @@ pub fn emit(p: &Problem, sup: &Supervisor, source: &str) -> String {
             .iter()
             .map(|l| format!("(in({0}.{l}) && {sup_name}.at_{0} == Loc_{0}.{l})", a.name))
             .collect();
-        let _ = writeln!(o, "    invariant mirror_{}: {};", a.name, alts.join(" || "));
+        let _ = writeln!(
+            o,
+            "    invariant mirror_{}: {};",
+            a.name,
+            chain(&alts, " || ")
+        );
     }
     for (i, n) in p.never.iter().enumerate() {
         let text = n.render(&|a, l| format!("({})", sys_at(a, l)));
@@ -188,13 +194,13 @@ pub fn emit(p: &Problem, sup: &Supervisor, source: &str) -> String {
                 .filter(|l| a.marked[*l as usize])
                 .map(|l| format!("({})", sys_at(ai as u32, l)))
                 .collect();
-            paren(&alts.join(" || "))
+            paren(&chain(&alts, " || "))
         })
         .collect();
     let marked = if marked.is_empty() {
         "true".to_string()
     } else {
-        marked.join(" && ")
+        chain(&marked, " && ")
     };
     let _ = writeln!(o, "    reachable all_marked: {marked};");
     o.push_str("}\n");
@@ -242,13 +248,13 @@ fn enabled(p: &Problem, kind: Kind, e: u32, at: &dyn Fn(u32, u32) -> String) -> 
         conj.push(match srcs.len() {
             0 => "false".to_string(),
             1 => srcs[0].clone(),
-            _ => format!("({})", srcs.join(" || ")),
+            _ => format!("({})", chain(&srcs, " || ")),
         });
     }
     if conj.is_empty() {
         "true".into()
     } else {
-        conj.join(" && ")
+        chain(&conj, " && ")
     }
 }
 

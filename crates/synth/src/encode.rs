@@ -18,7 +18,7 @@ pub struct Encoding {
 }
 
 impl Encoding {
-    /// The encoding of `p`'s automata.
+    /// The encoding of `p`'s automata, in instance order.
     pub fn new(p: &Problem) -> Encoding {
         let widths: Vec<usize> = p
             .automata
@@ -28,16 +28,33 @@ impl Encoding {
         let total: usize = widths.iter().sum();
         let vars = BddVariableSet::new_anonymous(total as u16);
         let all = vars.variables();
-        let mut bits = Vec::new();
+        let mut bits = vec![Vec::new(); widths.len()];
         let mut at = 0;
-        for w in widths {
-            bits.push(all[at..at + w].to_vec());
+        for (a, w) in widths.iter().enumerate() {
+            bits[a] = all[at..at + w].to_vec();
             at += w;
         }
         Encoding {
             vars,
             bits,
             sizes: p.automata.iter().map(|a| a.locs.len() as u32).collect(),
+        }
+    }
+
+    /// Number of 64-bit words of a minterm ([`Encoding::minterm`]).
+    pub fn minterm_words(&self) -> usize {
+        (self.vars.num_vars() as usize).div_ceil(64).max(1)
+    }
+
+    /// Append the minterm of `locs` (for [`crate::build::from_minterms`]) to `out`.
+    pub fn minterm(&self, locs: &[u32], out: &mut Vec<u64>) {
+        let at = out.len();
+        out.resize(at + self.minterm_words(), 0);
+        for (a, &l) in locs.iter().enumerate() {
+            let w = self.bits[a].len();
+            for (i, v) in self.bits[a].iter().enumerate() {
+                crate::build::set_bit(&mut out[at..], v.to_index(), (l >> (w - 1 - i)) & 1 == 1);
+            }
         }
     }
 
@@ -133,9 +150,20 @@ impl Encoding {
         g
     }
 
+    /// The BDD's paths as clauses; past [`SMALL_DNF`] paths, the library's optimised DNF
+    /// (prime-implicant style merging of cubes) instead, which is much shorter on large guards.
     fn dnf(&self, g: &Bdd) -> Formula {
         let mut clauses = Vec::new();
-        for path in g.sat_clauses() {
+        let mut paths: Vec<BddPartialValuation> = g.sat_clauses().take(SMALL_DNF + 1).collect();
+        if paths.len() > SMALL_DNF {
+            let opt = g.to_optimized_dnf();
+            if opt.len() < g.sat_clauses().count() {
+                paths = opt;
+            } else {
+                paths = g.sat_clauses().collect();
+            }
+        }
+        for path in paths {
             let mut clause = Vec::new();
             for (a, bits) in self.bits.iter().enumerate() {
                 if bits.iter().all(|v| path.get_value(*v).is_none()) {
@@ -162,6 +190,35 @@ impl Encoding {
             clauses,
         }
     }
+}
+
+/// Guards with at most this many BDD paths are printed path by path (short guards keep their
+/// familiar form); longer ones go through [`Bdd::to_optimized_dnf`].
+pub const SMALL_DNF: usize = 64;
+
+/// Chains of at most this many operands are written flat (`a || b || c`); longer ones as a
+/// balanced tree of parenthesised halves, so the parser's height limit (E0013) is never
+/// reached: a chain of `n` operands is then about `2·log2(n)` levels deep.
+pub const FLAT_CHAIN: usize = 64;
+
+/// `parts` joined by `op` (`" || "`, `" && "`): flat when short, balanced when long.
+pub fn chain(parts: &[String], op: &str) -> String {
+    if parts.len() <= FLAT_CHAIN {
+        return parts.join(op);
+    }
+    // Iterative pairing, level by level: no recursion on the input's size.
+    let mut level: Vec<String> = parts.chunks(FLAT_CHAIN / 2).map(|c| c.join(op)).collect();
+    while level.len() > 1 {
+        level = level
+            .chunks(2)
+            .map(|c| match c {
+                [a, b] => format!("({a}){op}({b})"),
+                [a] => a.clone(),
+                _ => String::new(),
+            })
+            .collect();
+    }
+    level.pop().unwrap_or_default()
 }
 
 /// `aut` is in one of `locs`.
@@ -210,13 +267,14 @@ impl Formula {
                 .iter()
                 .map(|c| {
                     let atoms: Vec<String> = c.iter().map(|a| atom(a, sizes, at)).collect();
-                    atoms.join(" && ")
+                    chain(&atoms, " && ")
                 })
                 .collect();
             if cs.len() == 1 {
                 cs[0].clone()
             } else {
-                cs.iter()
+                let cs: Vec<String> = cs
+                    .iter()
                     .map(|c| {
                         if c.contains("&&") {
                             format!("({c})")
@@ -224,8 +282,8 @@ impl Formula {
                             c.clone()
                         }
                     })
-                    .collect::<Vec<_>>()
-                    .join(" || ")
+                    .collect();
+                chain(&cs, " || ")
             }
         };
         match (self.negated, dnf.as_str()) {
@@ -245,7 +303,7 @@ fn atom(a: &Atom, sizes: &[u32], at: &dyn Fn(u32, u32) -> String) -> String {
         match parts.len() {
             0 => "false".into(),
             1 => parts[0].clone(),
-            _ => format!("({})", parts.join(" || ")),
+            _ => format!("({})", chain(&parts, " || ")),
         }
     } else {
         let parts: Vec<String> = complement
@@ -258,6 +316,37 @@ fn atom(a: &Atom, sizes: &[u32], at: &dyn Fn(u32, u32) -> String) -> String {
                 }
             })
             .collect();
-        parts.join(" && ")
+        chain(&parts, " && ")
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::chain;
+
+    #[test]
+    fn long_chains_are_balanced() {
+        let parts: Vec<String> = (0..10_000).map(|i| format!("x{i}")).collect();
+        let text = chain(&parts, " || ");
+        // Every operand once, in order.
+        let back: Vec<&str> = text
+            .split(" || ")
+            .map(|s| s.trim_matches(|c| c == '(' || c == ')'))
+            .collect();
+        assert_eq!(back.len(), 10_000);
+        assert!(back.iter().zip(&parts).all(|(a, b)| a == b));
+        // Parenthesis depth: 10 000 / 32 = 313 groups, paired 9 times.
+        let (mut depth, mut max) = (0i32, 0i32);
+        for c in text.chars() {
+            match c {
+                '(' => depth += 1,
+                ')' => depth -= 1,
+                _ => {}
+            }
+            max = max.max(depth);
+        }
+        assert_eq!(depth, 0);
+        assert_eq!(max, 9);
+        assert_eq!(chain(&parts[..3], " && "), "x0 && x1 && x2");
     }
 }

@@ -68,8 +68,94 @@ pub fn why_empty(p: &Problem) -> String {
             }
         }
     }
+    let witness = blocking_witness(p)
+        .map(|(path, locs)| {
+            format!(
+                "\nwitness: {} reaches ({}), from which no marked state can be reached without a state that violates a requirement",
+                if path.is_empty() {
+                    "the initial state".to_string()
+                } else {
+                    format!("the event trace {}", path.join(" "))
+                },
+                locs
+            )
+        })
+        .unwrap_or_default();
     format!(
-        "no supervisor exists: from the initial state ({}) no marked state can be reached without risking, through uncontrollable events, a state that blocks or violates a requirement",
+        "no supervisor exists: from the initial state ({}) no marked state can be reached without risking, through uncontrollable events, a state that blocks or violates a requirement{witness}",
         p.describe(&init)
     )
+}
+
+/// Explore at most this many product states for a witness.
+const WITNESS_LIMIT: usize = 1_000_000;
+
+/// The shortest event trace from the initial state to a state of the product (requirement-
+/// allowed moves, bad states not expanded) that is not bad but cannot reach a marked state
+/// that is not bad: where every continuation fails. `None` when there is none, or the product
+/// is too large to search.
+fn blocking_witness(p: &Problem) -> Option<(Vec<String>, String)> {
+    let init = p.initial();
+    let mut index: HashMap<Vec<u32>, usize> = HashMap::new();
+    let mut states = vec![init.clone()];
+    let mut parent: Vec<Option<(usize, EventId)>> = vec![None];
+    let mut preds: Vec<Vec<usize>> = vec![Vec::new()];
+    let mut bad = Vec::new();
+    index.insert(init, 0);
+    let mut i = 0;
+    while i < states.len() {
+        let s = states[i].clone();
+        let is_bad = immediate_violation(p, &s).is_some();
+        bad.push(is_bad);
+        if !is_bad {
+            for e in 0..p.events.len() as EventId {
+                if !p.enabled_by(Kind::Plant, &s, e) || !p.allowed(&s, e) {
+                    continue;
+                }
+                let Some(t) = p.successor(&s, e) else {
+                    continue;
+                };
+                let j = match index.get(&t) {
+                    Some(j) => *j,
+                    None => {
+                        if states.len() >= WITNESS_LIMIT {
+                            return None;
+                        }
+                        index.insert(t.clone(), states.len());
+                        states.push(t);
+                        parent.push(Some((i, e)));
+                        preds.push(Vec::new());
+                        states.len() - 1
+                    }
+                };
+                preds[j].push(i);
+            }
+        }
+        i += 1;
+    }
+    let mut co = vec![false; states.len()];
+    let mut stack: Vec<usize> = (0..states.len())
+        .filter(|&k| !bad[k] && p.is_marked(&states[k]))
+        .collect();
+    for &k in &stack {
+        co[k] = true;
+    }
+    while let Some(t) = stack.pop() {
+        for &s in &preds[t] {
+            if !bad[s] && !co[s] {
+                co[s] = true;
+                stack.push(s);
+            }
+        }
+    }
+    // States are numbered in breadth-first order, so the first one has a shortest trace.
+    let k = (0..states.len()).find(|&k| !bad[k] && !co[k])?;
+    let mut path = Vec::new();
+    let mut at = k;
+    while let Some((prev, e)) = parent[at] {
+        path.push(p.events[e as usize].name.clone());
+        at = prev;
+    }
+    path.reverse();
+    Some((path, p.describe(&states[k])))
 }

@@ -13,7 +13,11 @@ use statecheck_syntax::ast::{self, Control, Expr, Item, RequirementKind, Trigger
 use std::collections::HashMap;
 
 /// Choose the system: by name, else the only `system` of the file.
-pub fn find_system<'f>(file: &'f ast::File, name: Option<&str>) -> Result<&'f ast::System, String> {
+pub fn find_system<'f>(
+    file: &'f ast::File,
+    name: Option<&str>,
+) -> Result<&'f ast::System, crate::Error> {
+    let err = |s: String| crate::Error::new(crate::ErrorKind::System(s));
     let systems: Vec<&ast::System> = file
         .items
         .iter()
@@ -34,14 +38,16 @@ pub fn find_system<'f>(file: &'f ast::File, name: Option<&str>) -> Result<&'f as
             .iter()
             .find(|s| s.name.name == n)
             .copied()
-            .ok_or_else(|| format!("no system named `{n}`; available: {}", names())),
+            .ok_or_else(|| err(format!("no system named `{n}`; available: {}", names()))),
         None => match systems.as_slice() {
             [one] => Ok(one),
-            [] => Err("the file declares no system of plants and requirements".into()),
-            _ => Err(format!(
+            [] => Err(err(
+                "the file declares no system of plants and requirements".into(),
+            )),
+            _ => Err(err(format!(
                 "the file declares several systems; choose one with --system ({})",
                 names()
-            )),
+            ))),
         },
     }
 }

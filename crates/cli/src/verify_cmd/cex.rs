@@ -40,10 +40,27 @@ pub fn process(
             out.push(None);
             continue;
         };
-        let sc = scenario::from_input_vectors(program, vectors);
-        let run = statecheck_sim::run(program, &mut ScenarioInputs::new(&sc), Options::default());
+        let (sc, run, broken) = match r.loop_start {
+            Some(k) => {
+                let sc = scenario::from_lasso(program, vectors, k as usize);
+                let l = statecheck_sim::lasso::run_lasso(program, &sc, Options::default());
+                (sc, l.run, l.broken)
+            }
+            None => {
+                let sc = scenario::from_input_vectors(program, vectors);
+                let run =
+                    statecheck_sim::run(program, &mut ScenarioInputs::new(&sc), Options::default());
+                (sc, run, None)
+            }
+        };
         let tick = r.depth.saturating_sub(1);
         let mismatch = match (&run.stop, r.kind) {
+            _ if broken.is_some() => broken,
+            // A CTL counterexample is a path to an initial position that fails the formula;
+            // the simulator does not evaluate CTL.
+            (Stop::Completed, PropKind::Ctl | PropKind::Nonblocking) => None,
+            // A deadlock: the scenario ends in the state where no input is allowed.
+            (Stop::Completed, PropKind::Builtin) if r.name == "deadlock_free" => None,
             (_, PropKind::Reachable) => {
                 let at = run
                     .reached

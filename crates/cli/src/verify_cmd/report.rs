@@ -72,6 +72,9 @@ pub fn json(p: &Program, source: &str, rep: &Report, cexs: &[Option<Cex>], meta:
                     o["replay_note"] = json!(m);
                 }
             }
+            if let Some(k) = r.loop_start {
+                o["loop_start"] = json!(k);
+            }
             if let Some(e) = &r.error {
                 o["message"] = json!(p.describe_error(e));
             }

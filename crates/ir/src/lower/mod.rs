@@ -213,6 +213,10 @@ impl<'m> Lowerer<'m> {
             .map(|a| self.expr(a, None))
             .collect();
         let properties = self.properties();
+        let (temporal, fairness) = {
+            let props = &self.sys.properties;
+            crate::temporal::lower(props, &mut |e| self.expr(e, None))
+        };
         Program {
             name: self.sys.name.clone(),
             slots: std::mem::take(&mut self.lay.slots),
@@ -227,6 +231,8 @@ impl<'m> Lowerer<'m> {
             order: self.sys.order.clone(),
             assumes,
             properties,
+            temporal,
+            fairness,
             started,
             n_locals: self.locals.len(),
             code: std::sync::OnceLock::new(),

@@ -82,6 +82,8 @@ impl Lowerer<'_> {
                         ok: self.bin(BinOp::Le, me, w),
                     }
                 }
+                // Temporal properties: `crate::temporal`.
+                _ => continue,
             };
             out.push(Property {
                 name: prop.name.clone(),

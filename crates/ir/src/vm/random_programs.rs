@@ -381,6 +381,8 @@ fn random_program(seed: u64) -> Program {
         order: Vec::new(),
         assumes: Vec::new(),
         properties,
+        temporal: Vec::new(),
+        fairness: Vec::new(),
         started: 0,
         n_locals: g.n_locals as usize,
         code: std::sync::OnceLock::new(),

@@ -114,9 +114,20 @@ impl Usage {
             PropertyKind::Reachable { expr } => self.expr(cx, site, expr, None),
             PropertyKind::Respond {
                 trigger, response, ..
-            } => {
+            }
+            | PropertyKind::RespondEventually { trigger, response } => {
                 self.expr(cx, site, trigger, None);
                 self.expr(cx, site, response, None);
+            }
+            PropertyKind::Ltl(f) | PropertyKind::Ctl(f) => {
+                f.atoms(&mut |e| self.expr(cx, site, e, None));
+            }
+            PropertyKind::Nonblocking { expr } => self.expr(cx, site, expr, None),
+            PropertyKind::Fair { trigger, expr } => {
+                if let Some(t) = trigger {
+                    self.expr(cx, site, t, None);
+                }
+                self.expr(cx, site, expr, None);
             }
         }
     }

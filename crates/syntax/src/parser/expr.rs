@@ -118,6 +118,19 @@ impl Parser<'_> {
         self.report(d);
     }
 
+    /// An atom of a temporal formula: an expression whose operators bind at least as tightly
+    /// as comparisons (`&&`, `||` and `=>` belong to the formula).
+    pub(super) fn atom_expr(&mut self) -> Expr {
+        let start = self.tok().span;
+        if !self.enter() {
+            self.skip_rest();
+            return Expr::Error(self.span_from(start));
+        }
+        let (e, _) = self.binary(LVL_CMP);
+        self.leave();
+        e
+    }
+
     fn binary(&mut self, min: u8) -> Ex {
         let lhs = self.unary();
         self.binary_rest(lhs, min)

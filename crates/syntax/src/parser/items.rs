@@ -319,6 +319,9 @@ impl Parser<'_> {
             let start = self.pos;
             let t = self.peek();
             let r = match t {
+                Tok::Ident if self.at_temporal_decl() => {
+                    self.temporal_property().map(|p| chart.properties.push(p))
+                }
                 Tok::Kw(Kw::Input | Kw::Output | Kw::Local) => {
                     self.var_decl().map(|v| chart.vars.push(v))
                 }
@@ -483,7 +486,7 @@ impl Parser<'_> {
         let example = match t.kind {
             Tok::Kw(Kw::Invariant) => "invariant NAME: expr [assuming expr];",
             Tok::Kw(Kw::Reachable) => "reachable NAME: expr;",
-            _ => "respond NAME: trigger => response within N;",
+            _ => "respond NAME: trigger => response [within N];",
         };
         let name = self.expect_ident(&format!("a property name after `{kw}`"))?;
         if self.eat(Tok::Colon).is_none() {
@@ -514,9 +517,18 @@ impl Parser<'_> {
                     return Err(Failed);
                 }
                 let response = self.expr();
+                if self.at(Tok::Semi) {
+                    // No bound: the response must come eventually (liveness).
+                    self.expect_semi("after the property");
+                    return Ok(Property {
+                        name,
+                        kind: PropertyKind::RespondEventually { trigger, response },
+                        span: self.span_from(t.span),
+                    });
+                }
                 if self.eat_kw(Kw::Within).is_none() {
                     let d = self
-                        .expected_diag("`within` and a tick bound after the response")
+                        .expected_diag("`within` and a tick bound, or `;`, after the response")
                         .with_hint(format!("write `{example}`"));
                     self.report(d);
                     return Err(Failed);
@@ -572,6 +584,9 @@ impl Parser<'_> {
             let pos = self.pos;
             let t = self.peek();
             let r = match t {
+                Tok::Ident if self.at_temporal_decl() => {
+                    self.temporal_property().map(|p| sys.properties.push(p))
+                }
                 Tok::Kw(Kw::Instance) => self.instance().map(|i| sys.instances.push(i)),
                 Tok::Kw(Kw::Connect) => self.connection().map(|c| sys.connections.push(c)),
                 Tok::Kw(Kw::Order) => self.order().map(|o| sys.order.push(o)),

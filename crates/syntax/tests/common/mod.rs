@@ -264,6 +264,24 @@ impl Printer {
                 expr(response),
                 expr(within)
             )),
+            PropertyKind::RespondEventually { trigger, response } => self.line(format!(
+                "respond {n}: {} => {}",
+                expr(trigger),
+                expr(response)
+            )),
+            PropertyKind::Ltl { formula } => {
+                self.line(format!("ltl {n}: {}", formula_text(formula)))
+            }
+            PropertyKind::Ctl { formula } => {
+                self.line(format!("ctl {n}: {}", formula_text(formula)))
+            }
+            PropertyKind::Nonblocking { expr: e } => {
+                self.line(format!("nonblocking {n}: {}", expr(e)))
+            }
+            PropertyKind::Fair { trigger, expr: e } => match trigger {
+                Some(t) => self.line(format!("fair {n}: {} => {}", expr(t), expr(e))),
+                None => self.line(format!("fair {n}: {}", expr(e))),
+            },
         }
     }
 
@@ -424,5 +442,27 @@ impl Printer {
                 p.chart(o);
             }
         });
+    }
+}
+
+/// A formula, fully parenthesised.
+pub fn formula_text(f: &statecheck_syntax::ast::Formula) -> String {
+    use statecheck_syntax::ast::{Formula as F, Quant};
+    match f {
+        F::Atom(e) => format!("{{{}}}", expr(e)),
+        F::Not(a, _) => format!("!{}", formula_text(a)),
+        F::And(a, b, _) => format!("({} && {})", formula_text(a), formula_text(b)),
+        F::Or(a, b, _) => format!("({} || {})", formula_text(a), formula_text(b)),
+        F::Implies(a, b, _) => format!("({} => {})", formula_text(a), formula_text(b)),
+        F::Unary(op, a, _) => format!("{} {}", op.as_str(), formula_text(a)),
+        F::Binary(op, a, b, _) => {
+            format!("({} {} {})", formula_text(a), op.as_str(), formula_text(b))
+        }
+        F::QuantUntil(q, a, b, _) => format!(
+            "{}[{} U {}]",
+            if *q == Quant::All { "A" } else { "E" },
+            formula_text(a),
+            formula_text(b)
+        ),
     }
 }

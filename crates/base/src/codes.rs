@@ -1,0 +1,149 @@
+//! The table of diagnostic codes: one entry per stable code, with a title and an explanation.
+//!
+//! This is the one source of `statecheck explain CODE` and of the index `docs/diagnostics.md`
+//! (generated from it by [`markdown_index`]; a test compares the file and fails when they
+//! differ, and another fails when a code emitted anywhere in the sources has no entry).
+//! Codes are a contract: an entry keeps its meaning forever and is never reused.
+
+/// One diagnostic code.
+#[derive(Clone, Copy, Debug)]
+pub struct CodeInfo {
+    /// The code, e.g. `E0111`.
+    pub code: &'static str,
+    /// A short title.
+    pub title: &'static str,
+    /// What it means and what to do.
+    pub explanation: &'static str,
+    /// The document under `docs/` that describes the construct.
+    pub doc: &'static str,
+}
+
+const fn code(
+    code: &'static str,
+    title: &'static str,
+    explanation: &'static str,
+    doc: &'static str,
+) -> CodeInfo {
+    CodeInfo {
+        code,
+        title,
+        explanation,
+        doc,
+    }
+}
+
+/// Every code: errors of the parser (E00xx) and of the checker (E01xx), warnings of the
+/// checker (W02xx) and of the design-rule lints (W03xx), errors of synthesis (E07xx).
+pub const CODES: &[CodeInfo] = &[
+    code("E0001", "unexpected character", "A character that cannot start a token (such as `@`, `$`, a `#` comment or a quoted string from another language) was skipped. Comments are `// …` or `/* … */`; the language has no strings.", "grammar.md"),
+    code("E0002", "unterminated block comment", "A `/*` comment is never closed and runs to the end of the file. Close it with `*/`; block comments do not nest.", "grammar.md"),
+    code("E0003", "integer literal out of range", "The literal does not fit in a signed 64-bit integer. Values of variables are bounded by their `int[lo..hi]` type anyway.", "language.md"),
+    code("E0004", "malformed integer literal", "A digit that is invalid for the base, or no digits after `0x`/`0b`.", "language.md"),
+    code("E0010", "unexpected token", "The parser expected something else here (the message says what); it skipped to the next `;`, `}` or keyword and went on.", "grammar.md"),
+    code("E0011", "missing `;`", "Declarations, transitions and statements end with `;`.", "grammar.md"),
+    code("E0012", "unclosed delimiter", "A `{`, `(` or `[` is never closed; the secondary label shows where it was opened.", "grammar.md"),
+    code("E0013", "nesting too deep", "More nested states, blocks or expressions than the parser accepts (256 levels, or expressions more than 512 operators tall). Split the model into named parts.", "grammar.md"),
+    code("E0014", "empty transition", "`on` without trigger, guard or target can never be taken. Add an event, a guard or a target.", "language.md"),
+    code("E0015", "`=` where a comparison is expected", "`=` assigns; `==` compares. The quick fix replaces `=` with `==`.", "language.md"),
+    code("E0016", "chained comparison", "Comparisons do not chain: `a < b < c` is an error; write `a < b && b < c`.", "language.md"),
+    code("E0017", "declaration in the wrong place", "Variables and properties belong at chart level, instances and connections in a system, `parallel { … }` only at chart level.", "language.md"),
+    code("E0018", "malformed duration", "A duration is a number, name or parenthesised expression followed by `ms`, `s` or `min`, e.g. `after(3 s)`, `tick 100 ms;`.", "language.md"),
+    code("E0019", "`if` expression as an operand", "An `if … then … else …` expression used as an operand needs parentheses: `(if c then a else b) + 1`.", "language.md"),
+    code("E0020", "missing `return`", "A function body with braces is `let` bindings followed by one `return expr;`.", "language.md"),
+    code("E0101", "unknown name", "A name (variable, event, constant, enum literal, type, function, state, chart, instance) is not declared where it is used. The hint suggests a similar declared name when there is one.", "language.md"),
+    code("E0102", "declared twice", "Two declarations of the same kind share a name in one scope (charts, systems, variables, properties, …).", "language.md"),
+    code("E0103", "type mismatch", "An expression has the wrong type for its place: a condition that is not `bool`, an `int` given to a `bool`, an enum literal of another enum, an event used as a value, a connection between ports of different types.", "language.md"),
+    code("E0104", "value out of range", "A constant value lies outside the range of its type or of what the construct accepts (an initial value outside `int[lo..hi]`, an empty range, a `within` bound, a non-positive tick length).", "language.md"),
+    code("E0105", "not a constant", "A place that needs a value known before the run (a constant, a type bound, an instance count, a delay) was given an expression that reads variables, or constants depend on each other in a cycle.", "language.md"),
+    code("E0106", "missing `initial`", "A chart or state with child states must say which child is entered first: `initial NAME;`.", "language.md"),
+    code("E0107", "bad `initial`", "`initial` does not name a child state of this state, or a parallel state (whose regions all start) declares one.", "language.md"),
+    code("E0108", "duplicate at one level", "Two states, regions or junctions of one parent share a name, or an element that may appear once (such as `tick`, `initial`, `history`) appears twice.", "language.md"),
+    code("E0109", "states and regions mixed", "A state holds either child states (exclusive) or regions (parallel), not both; regions hold states, not actions or transitions.", "language.md"),
+    code("E0110", "not an event", "A trigger or `raise` names a variable, or an assignment writes an event. Events are raised and tested; variables are assigned and read.", "language.md"),
+    code("E0111", "unknown transition target", "No state or junction of that name is visible from the transition's source. Targets are looked up from the source state outwards; a state in another region or deeper needs a dotted path such as `right.B`.", "language.md"),
+    code("E0112", "wrong number of arguments", "A call passes more or fewer arguments than the function (or `min`, `max`, `abs`, `int`) takes.", "language.md"),
+    code("E0113", "function used before its declaration, or recursive", "Functions are inlined, so they may only call functions declared before them and never themselves.", "language.md"),
+    code("E0114", "empty declaration", "An enum has no literals, or a chart has no states.", "language.md"),
+    code("E0115", "bad `history`", "`history` belongs in an exclusive state with children; a parallel state's regions take it instead.", "language.md"),
+    code("E0116", "cannot `raise` this event", "Only the chart's output and local events can be raised; inputs come from the environment.", "language.md"),
+    code("E0117", "`after` of zero ticks", "`after(n)` must wait at least one tick.", "language.md"),
+    code("E0119", "junction loop", "Following junction branches can lead back to the same junction within one transition, which would never end.", "language.md"),
+    code("E0120", "duration without a tick length", "A delay in time units (`after(3 s)`) needs the file's `tick` declaration, or it does not divide into whole ticks.", "language.md"),
+    code("E0121", "observer without `error` state", "An observer reports a violation by entering its top-level state `error`; declare one.", "properties.md"),
+    code("E0122", "bad `order`", "`order` lists each instance once and never observers (which always run last).", "language.md"),
+    code("E0123", "bad connection", "A connection is `connect instance.output -> instance.input;` between existing ports of one type; `[*]` only on the receiving side; an input is driven at most once.", "language.md"),
+    code("E0131", "transition leaves the chart's top level", "The lowering refuses a transition whose source and target lie in different top-level regions, or that would leave the chart.", "semantics.md"),
+    code("W0201", "no initial value", "A variable without `= value` starts at its type's default (the lowest value, `false`, the first literal); say it explicitly.", "lints.md"),
+    code("W0202", "instance connected to itself", "The input reads the instance's own output as of the previous tick.", "lints.md"),
+    code("W0301", "state with no incoming transition", "No transition enters the state and it is not its parent's `initial`: it can never be active.", "lints.md"),
+    code("W0302", "state isolated from its level's initial state", "The state cannot be reached from the `initial` state of its level.", "lints.md"),
+    code("W0303", "two transitions with the same `priority`", "Two transitions of one state have the same explicit priority; their order is then textual, which the priority was meant to override.", "lints.md"),
+    code("W0304", "transition that can never fire", "An earlier transition (or choice branch) always preempts it.", "lints.md"),
+    code("W0305", "guard that is always false", "The guard is constant `false`: the transition never fires.", "lints.md"),
+    code("W0306", "self-transition on a composite state", "It exits and re-enters the whole subtree (resetting it), which is often not intended.", "lints.md"),
+    code("W0307", "choice without `else`", "All guards of the choice can be false, and then the transition does not fire.", "lints.md"),
+    code("W0308", "unused variable or event", "An input never read, an output never written, or a local never used.", "lints.md"),
+    code("W0309", "local written but never read", "A local variable or event is written (or raised) but never read.", "lints.md"),
+    code("W0310", "transition without a target suppresses `during`", "A transition that fires ends its state's reaction for the tick (rule R4), internal ones included: in the ticks where it fires, the state's `during` action does not run. Do the transition's work inside `during` with an `if` to run both.", "lints.md"),
+    code("E0701", "synthesis: bad instance", "Synthesis systems hold single instances of existing charts (no arrays): events synchronise by name.", "synthesis.md"),
+    code("E0702", "synthesis: not a plant or requirement", "A synthesis system holds only `plant chart` and `requirement chart` instances.", "synthesis.md"),
+    code("E0703", "synthesis: declaration other than an event", "Plant and requirement charts declare only `controllable event` and `uncontrollable event`.", "synthesis.md"),
+    code("E0704", "synthesis: event both controllable and uncontrollable", "Each event has one controllability across the system.", "synthesis.md"),
+    code("E0705", "synthesis: reserved name", "`none` is reserved in the emitted supervisor.", "synthesis.md"),
+    code("E0706", "synthesis: unknown event", "A requirement names an event that no chart of the system declares.", "synthesis.md"),
+    code("E0707", "synthesis: no plant", "A synthesis system needs at least one plant.", "synthesis.md"),
+    code("E0708", "synthesis: not a flat automaton", "Plant and requirement charts are flat: states with `on EVENT -> STATE;` transitions only (no children, actions, guards or timers).", "synthesis.md"),
+    code("E0709", "synthesis: bad state or `initial`", "A target names no state, or the chart does not have exactly one `initial` state.", "synthesis.md"),
+    code("E0710", "synthesis: bad transition", "A transition is `on EVENT -> STATE;` with an event of the chart and a sibling state as target.", "synthesis.md"),
+    code("E0711", "synthesis: nondeterministic", "Two transitions on one event leave the same state.", "synthesis.md"),
+    code("E0712", "synthesis: bad state requirement", "State requirements use `in(instance.State)`, `!`, `&&`, `||`, `true` and `false`.", "synthesis.md"),
+    code("E0801", "scenario: bad repeat count", "A scenario line ends with `* N` where N is a whole number of at least 1.", "language.md"),
+    code("E0802", "scenario: empty item", "Items of a scenario line are separated by single commas.", "language.md"),
+    code("E0803", "scenario: unknown input", "The name is not a free input of the system: it is misspelt (the hint suggests the closest input), or it is computed or connected inside the system.", "language.md"),
+    code("E0804", "scenario: ambiguous input", "A bare name matches inputs of several instances; qualify it as `instance.input`.", "language.md"),
+    code("E0805", "scenario: value given to an event", "An input event is present (its bare name on the line) or absent (left out); it takes no value, not even `true`.", "language.md"),
+    code("E0806", "scenario: variable without a value", "A bare name makes an event present; an input variable needs `name = value`.", "language.md"),
+    code("E0807", "scenario: value out of range", "The value lies outside the input's declared range `int[lo..hi]`.", "language.md"),
+    code("E0808", "scenario: value of the wrong type", "A `bool` takes `true` or `false` (not `1` or `0`), an enum one of its literals, an integer a decimal, hex or binary literal.", "language.md"),
+    code("E0809", "scenario: too long", "The scenario would expand (with its `* N` repeats) to more ticks than a run may have.", "language.md"),
+    code("E0810", "scenario: second loop", "A scenario has at most one `loop:` line: the ticks after it repeat forever (a lasso).", "properties.md"),
+    code("E0811", "scenario: misplaced loop", "The `loop:` line must follow the first tick (tick 0 only initialises) and precede at least one tick.", "properties.md"),
+];
+
+/// The entry of a code (case-insensitive), if any.
+pub fn lookup(code: &str) -> Option<&'static CodeInfo> {
+    CODES.iter().find(|c| c.code.eq_ignore_ascii_case(code))
+}
+
+/// The page `statecheck explain CODE` prints.
+pub fn page(c: &CodeInfo) -> String {
+    format!(
+        "{}: {}\n\n{}\n\nSee docs/{}. Examples: tests/diagnostics/{}_*.sc (if present).\n",
+        c.code,
+        c.title,
+        c.explanation,
+        c.doc,
+        c.code.to_ascii_lowercase()
+    )
+}
+
+/// The text of `docs/diagnostics.md`.
+pub fn markdown_index() -> String {
+    let mut s = String::from(
+        "# Diagnostic codes\n\nGenerated from `crates/base/src/codes.rs` (the table behind \
+         `statecheck explain CODE`); do not edit by hand: run\n\
+         `UPDATE_EXPECT=1 cargo test -p statecheck-cli --test explain`.\n\n\
+         | code | title | explanation | see |\n|---|---|---|---|\n",
+    );
+    for c in CODES {
+        s.push_str(&format!(
+            "| {} | {} | {} | [{}]({}) |\n",
+            c.code,
+            c.title.replace('|', "\\|"),
+            c.explanation.replace('|', "\\|"),
+            c.doc,
+            c.doc
+        ));
+    }
+    s
+}

@@ -1,0 +1,479 @@
+// The studio page: one WebSocket session; the server runs every tick, the page draws.
+'use strict';
+
+const $ = s => document.querySelector(s);
+const studio = window.studio = {
+  model: null, records: [], cursor: -1, run: null, held: {}, armed: {}, ready: false,
+  lastScenario: null, errors: [], svgs: [], layouts: {}, selection: [], tab: 'wave', hidden: new Set(),
+};
+const token = new URLSearchParams(location.search).get('token') || '';
+let ws, nextId = 1;
+const waiting = new Map();
+let running = false, busy = false;
+
+function connect() {
+  ws = new WebSocket(`${location.protocol === 'https:' ? 'wss' : 'ws'}://${location.host}/ws?token=${encodeURIComponent(token)}`);
+  ws.onmessage = ev => receive(JSON.parse(ev.data));
+  ws.onclose = () => { toast('connection closed — reload the page', true); setRunning(false); };
+}
+
+// Send a request; resolves with its reply.
+function send(req) {
+  const id = nextId++;
+  req.id = id;
+  return new Promise(resolve => { waiting.set(id, resolve); ws.send(JSON.stringify(req)); });
+}
+studio.send = send;
+
+function receive(m) {
+  if (m.type === 'model') {
+    if (m.session !== undefined) setModel(m.model);
+  } else if (m.type === 'diagnostics') {
+    showDiagnostics(m.diagnostics);
+  } else if (m.type === 'state') {
+    applyState(m);
+    if (m.note) toast(m.note, true);
+  } else if (m.type === 'scenario') {
+    studio.lastScenario = m.text;
+  } else if (m.type === 'error') {
+    studio.errors.push(m);
+    toast(m.message, true);
+    if (running) setRunning(false);
+  }
+  if (m.id && waiting.has(m.id)) { waiting.get(m.id)(m); waiting.delete(m.id); }
+}
+
+function toast(text, err) {
+  const t = document.createElement('div');
+  t.className = 'toast' + (err ? ' err' : '');
+  t.textContent = text;
+  document.body.appendChild(t);
+  setTimeout(() => t.remove(), err ? 5000 : 2500);
+}
+
+function showDiagnostics(list) {
+  const d = $('#diag');
+  d.hidden = false;
+  d.innerHTML = '<h2>The model does not check</h2><p>Fix the file and save it: the page reloads by itself.</p>' +
+    list.map(x => `<div class="d"><b>${x.severity}${x.code ? '[' + x.code + ']' : ''}</b>: ${escapeHtml(x.message)}<br><code>${escapeHtml(x.file)}${x.line ? ':' + x.line + ':' + x.col : ''}</code>` +
+      (x.text ? `<pre>${escapeHtml(x.text)}\n${' '.repeat(Math.max(0, x.col - 1))}^</pre>` : '') + (x.hint ? `<i>help: ${escapeHtml(x.hint)}</i>` : '') + '</div>').join('');
+  $('#charts').innerHTML = '';
+  studio.model = null;
+  studio.ready = true;
+}
+
+function escapeHtml(s) { return String(s).replace(/&/g, '&amp;').replace(/</g, '&lt;').replace(/>/g, '&gt;'); }
+
+async function setModel(model) {
+  studio.ready = false;
+  $('#diag').hidden = true;
+  studio.model = model;
+  studio.records = [];
+  studio.cursor = -1;
+  studio.layouts = {};
+  $('#title').textContent = `${model.system} — ${model.path}`;
+  document.title = `${model.system} · statecheck studio`;
+  buildPresets();
+  buildControls();
+  defaultSelection();
+  const t0 = performance.now();
+  await buildCharts();
+  studio.layoutMs = performance.now() - t0;
+  render();
+  studio.ready = true;
+}
+
+// ---------------------------------------------------------------- environment controls
+function inputsOf(inst) { return studio.model.inputs.filter(i => i.instance === inst); }
+
+function buildControls() {
+  const box = $('#controls');
+  box.innerHTML = '';
+  const m = studio.model;
+  if (!m.inputs.length) { box.innerHTML = '<p class="muted">The system is closed: no free inputs.</p>'; return; }
+  m.instances.forEach((inst, k) => {
+    const ins = inputsOf(k).filter(i => !studio.hidden.has(i.name));
+    if (!ins.length) return;
+    const h = document.createElement('h3');
+    h.textContent = inst.name;
+    box.appendChild(h);
+    for (const i of ins) box.appendChild(control(i));
+  });
+}
+
+function control(i) {
+  const row = document.createElement('div');
+  row.className = 'ctl';
+  row.dataset.input = i.name;
+  const short = i.name.slice(i.name.indexOf('.') + 1);
+  const lab = document.createElement('label');
+  lab.className = 'name'; lab.textContent = short; lab.title = i.name;
+  row.appendChild(lab);
+  const right = document.createElement('div');
+  right.className = 'range';
+  const setHeld = v => send({op: 'set', set: {[i.name]: v}});
+  if (i.event || i.type === 'bool') {
+    if (!i.event) {
+      const sw = document.createElement('label');
+      sw.className = 'switch'; sw.title = 'held value';
+      sw.innerHTML = `<input type="checkbox" data-held="${i.name}"><span></span>`;
+      sw.querySelector('input').addEventListener('change', e => setHeld(e.target.checked));
+      right.appendChild(sw);
+    } else {
+      const hold = document.createElement('label');
+      hold.className = 'chk'; hold.title = 'hold: present every tick';
+      hold.innerHTML = `<input type="checkbox" data-held="${i.name}">hold`;
+      hold.querySelector('input').addEventListener('change', e => setHeld(e.target.checked));
+      right.appendChild(hold);
+    }
+    const b = document.createElement('button');
+    b.className = 'pulse'; b.dataset.pulse = i.name;
+    b.textContent = i.event ? 'raise' : '1 tick';
+    b.title = i.event ? 'present in the next tick only' : 'the opposite value for the next tick only';
+    b.addEventListener('click', () => {
+      if (i.name in studio.armed) delete studio.armed[i.name];
+      else studio.armed[i.name] = i.event ? true : !studio.held[i.name];
+      b.classList.toggle('armed', i.name in studio.armed);
+    });
+    right.appendChild(b);
+  } else if (i.type === 'enum') {
+    const s = document.createElement('select');
+    s.dataset.held = i.name;
+    for (const v of i.variants) s.add(new Option(v, v));
+    s.addEventListener('change', () => setHeld(s.value));
+    right.appendChild(s);
+  } else {
+    const wide = i.hi - i.lo <= 100000;
+    if (wide) {
+      const r = document.createElement('input');
+      r.type = 'range'; r.min = i.lo; r.max = i.hi; r.dataset.heldRange = i.name;
+      r.addEventListener('change', () => setHeld(+r.value));
+      r.addEventListener('input', () => { const n = row.querySelector('input[type=number]'); if (n) n.value = r.value; });
+      right.appendChild(r);
+    }
+    const n = document.createElement('input');
+    n.type = 'number'; n.min = i.lo; n.max = i.hi; n.dataset.held = i.name;
+    n.title = `${i.lo}..${i.hi}`;
+    n.addEventListener('change', () => {
+      const v = Math.round(+n.value);
+      if (Number.isFinite(v) && v >= i.lo && v <= i.hi) setHeld(v); else { toast(`${i.name} must be in ${i.lo}..${i.hi}`, true); syncControls(); }
+    });
+    right.appendChild(n);
+  }
+  row.appendChild(right);
+  return row;
+}
+
+function syncControls() {
+  for (const el of document.querySelectorAll('[data-held]')) {
+    const v = studio.held[el.dataset.held];
+    if (v === undefined) continue;
+    if (el.type === 'checkbox') el.checked = !!v; else if (document.activeElement !== el) el.value = v;
+  }
+  for (const el of document.querySelectorAll('[data-held-range]')) {
+    const v = studio.held[el.dataset.heldRange];
+    if (v !== undefined && document.activeElement !== el) el.value = v;
+  }
+  for (const b of document.querySelectorAll('button.pulse')) b.classList.toggle('armed', b.dataset.pulse in studio.armed);
+}
+
+// ---------------------------------------------------------------- presets (thesis ch. 4)
+function buildPresets() {
+  const sel = $('#preset');
+  sel.innerHTML = '';
+  sel.add(new Option('all inputs', 'all'));
+  const m = studio.model;
+  const names = m.inputs.map(i => i.name);
+  const fault = n => /(stall|fault|powerloss|savefails|cofnow|fail|corrupt)/i.test(n.split('.').pop());
+  if (names.some(n => /\.runMode$/.test(n))) sel.add(new Option('FAM mode: you are the master', 'fam'));
+  if (names.some(n => /ccm/i.test(n))) sel.add(new Option('closed loop: CCM and faults', 'closed'));
+  sel.onchange = () => applyPreset(sel.value, fault);
+}
+
+function applyPreset(p, fault) {
+  const m = studio.model;
+  studio.hidden = new Set();
+  const set = {};
+  if (p === 'fam') {
+    for (const i of m.inputs) {
+      const short = i.name.split('.').pop();
+      if (short === 'runMode') set[i.name] = 'NORMAL_RUN';
+    }
+  } else if (p === 'closed') {
+    for (const i of m.inputs) if (!/ccm/i.test(i.name) && !fault(i.name)) studio.hidden.add(i.name);
+  }
+  buildControls();
+  syncControls();
+  if (Object.keys(set).length) send({op: 'set', set});
+}
+
+// ---------------------------------------------------------------- charts
+async function buildCharts() {
+  const box = $('#charts');
+  box.innerHTML = '';
+  const m = studio.model;
+  const svgText = {};
+  // Each chart is laid out once (instances share it) and the drawing is kept in the
+  // browser's storage, keyed by the chart's description, so a reload draws at once.
+  for (const inst of m.instances) {
+    if (inst.chart in svgText) continue;
+    const desc = JSON.stringify(m.charts[inst.chart]);
+    const key = 'statecheck-layout-v1:' + hash(desc);
+    let svg = null;
+    try { svg = localStorage.getItem(key); } catch (e) { svg = null; }
+    if (!svg) {
+      svg = await Chart.layout(m.charts[inst.chart]);
+      try { localStorage.setItem(key, svg); } catch (e) { /* storage full or disabled */ }
+    }
+    svgText[inst.chart] = svg;
+  }
+  studio.svgs = m.instances.map((inst, k) => {
+    const card = document.createElement('div');
+    card.className = 'card';
+    card.dataset.instance = inst.name;
+    card.innerHTML = `<div class="cardhead">${escapeHtml(inst.name)}<span class="chartname">${escapeHtml(m.charts[inst.chart].name)}${inst.observer ? ' · observer' : ''}</span></div>` + svgText[inst.chart];
+    box.appendChild(card);
+    return card.querySelector('svg');
+  });
+  // Many instances side by side: start smaller (master + 5 FAMs has 19 instances).
+  $('#zoom').value = m.instances.length > 8 ? '0.5' : '1';
+  zoom();
+}
+
+// A 53-bit string hash (cyrb53), for layout cache keys.
+function hash(str) {
+  let h1 = 0xdeadbeef, h2 = 0x41c6ce57;
+  for (let i = 0; i < str.length; i++) {
+    const ch = str.charCodeAt(i);
+    h1 = Math.imul(h1 ^ ch, 2654435761);
+    h2 = Math.imul(h2 ^ ch, 1597334677);
+  }
+  h1 = Math.imul(h1 ^ (h1 >>> 16), 2246822507) ^ Math.imul(h2 ^ (h2 >>> 13), 3266489909);
+  h2 = Math.imul(h2 ^ (h2 >>> 16), 2246822507) ^ Math.imul(h1 ^ (h1 >>> 13), 3266489909);
+  return (4294967296 * (2097151 & h2) + (h1 >>> 0)).toString(36) + ':' + str.length;
+}
+
+function zoom() {
+  const z = +$('#zoom').value || 1;
+  for (const svg of studio.svgs) {
+    const w = +svg.getAttribute('width'), h = +svg.getAttribute('height');
+    svg.style.width = `${w * z}px`;
+    svg.style.height = `${h * z}px`;
+  }
+}
+
+// ---------------------------------------------------------------- state and rendering
+function applyState(m) {
+  if (m.truncate !== null && m.truncate !== undefined) studio.records.length = Math.min(studio.records.length, m.truncate);
+  for (const r of m.ticks) studio.records[r.tick] = r;
+  studio.records.length = Math.min(studio.records.length, m.run.ticks + (m.run.stop && m.run.stop.status === 'assume_violated' ? 0 : 0));
+  studio.run = m.run;
+  studio.held = m.held;
+  studio.cursor = studio.records.length - 1;
+  syncControls();
+  render();
+}
+
+function shown() {
+  const r = studio.records;
+  let c = studio.cursor;
+  while (c >= 0 && r[c] && !r[c].active) c--;
+  return c >= 0 ? r[c] : null;
+}
+
+function render() {
+  const m = studio.model;
+  if (!m) return;
+  const rec = shown();
+  const cov = $('#cov').checked && studio.run ? studio.run.coverage : null;
+  studio.svgs.forEach((svg, k) => svg && Chart.paint(svg, k, rec, m, cov));
+  renderStatus();
+  renderVars(rec);
+  renderMessages();
+  renderSignals();
+}
+
+function fmtTime(ms) { return ms >= 1000 ? `${(ms / 1000).toFixed(2)} s` : `${ms} ms`; }
+
+function renderStatus() {
+  const run = studio.run;
+  if (!run) return;
+  const m = studio.model;
+  const t = run.ticks;
+  let s = `<b>${t}</b> tick${t === 1 ? '' : 's'}` + (m.tick_ms ? ` · ${fmtTime(t * m.tick_ms)}` : '');
+  if (studio.cursor < studio.records.length - 1) s += ` · viewing tick ${studio.cursor}`;
+  if (run.future) s += ` · ${run.future} to redo`;
+  if (run.stop) s += ` · <span class="stop">${escapeHtml(run.stop.message)}</span>`;
+  $('#status').innerHTML = s;
+  $('#forward').disabled = !run.future;
+  $('#back').disabled = t === 0;
+  for (const id of ['#step', '#stepn', '#run']) $(id).disabled = !!run.stop;
+}
+
+function renderVars(rec) {
+  const tb = $('#vars tbody');
+  $('#cursor-tick').textContent = studio.cursor >= 0 ? studio.cursor : '–';
+  if (!rec) { tb.innerHTML = ''; return; }
+  const prev = studio.records[rec.tick - 1];
+  const rows = [];
+  const m = studio.model;
+  m.instances.forEach((inst, k) => {
+    rows.push(`<tr class="inst"><td colspan="2">${escapeHtml(inst.name)} <span style="font-weight:normal;color:#6a7383">${escapeHtml((rec.active[inst.name] || []).filter(p => !(rec.active[inst.name] || []).some(q => q.startsWith(p + '.'))).join(', '))}</span></td></tr>`);
+    for (const v of m.vars) {
+      if (v.instance !== k) continue;
+      const val = rec.vars[v.name];
+      const ch = prev && prev.vars && prev.vars[v.name] !== val;
+      rows.push(`<tr class="${ch ? 'changed' : ''}"><td title="${v.name} (${v.kind})">${escapeHtml(v.name.slice(inst.name.length + 1))}</td><td>${escapeHtml(String(val))}</td></tr>`);
+    }
+    for (const e of m.events) {
+      if (e.instance !== k) continue;
+      if (rec.events.includes(e.name)) rows.push(`<tr class="changed"><td>${escapeHtml(e.name.slice(inst.name.length + 1))}</td><td>⚡ present</td></tr>`);
+    }
+  });
+  tb.innerHTML = rows.join('');
+}
+
+function renderMessages() {
+  const box = $('#messages');
+  const run = studio.run;
+  const items = [];
+  if (run && run.stop) items.push(`<div class="msg" data-t="${run.stop.tick}">${escapeHtml(run.stop.message)}</div>`);
+  if (studio.lastLoaded) items.push(`<div class="msg info">replaying ${escapeHtml(studio.lastLoaded)}</div>`);
+  box.innerHTML = items.join('');
+  for (const d of box.querySelectorAll('.msg[data-t]')) d.onclick = () => { setCursor(+d.dataset.t); };
+}
+
+function setCursor(t) {
+  studio.cursor = Math.max(0, Math.min(studio.records.length - 1, t));
+  render();
+}
+
+// ---------------------------------------------------------------- signals
+function defaultSelection() {
+  const m = studio.model;
+  const sel = [];
+  // The free inputs, then the outputs of the instances with the most states (the plant and
+  // the controller rather than glue charts), a dozen rows in all.
+  for (const v of m.vars) if (v.free && sel.length < 5) sel.push(v);
+  for (const e of m.events) if (e.free && sel.length < 7) sel.push(Object.assign({isEvent: true}, e));
+  const size = k => m.charts[m.instances[k].chart].states.length;
+  const order = m.instances.map((_, k) => k).filter(k => !m.instances[k].observer).sort((a, b) => size(b) - size(a));
+  for (const k of order) {
+    for (const v of m.vars) if (v.instance === k && v.kind === 'output' && sel.length < 13 && !sel.includes(v)) sel.push(v);
+  }
+  studio.selection = sel;
+  const pk = $('#picker');
+  pk.innerHTML = m.vars.map(v => `<label><input type="checkbox" data-sig="${v.name}"${sel.includes(v) ? ' checked' : ''}> ${v.name}</label>`).join('') +
+    m.events.map(e => `<label><input type="checkbox" data-ev="${e.name}"${sel.some(s => s.name === e.name) ? ' checked' : ''}> ⚡ ${e.name}</label>`).join('');
+  pk.onchange = () => {
+    studio.selection = [];
+    for (const c of pk.querySelectorAll('input:checked')) {
+      if (c.dataset.sig) studio.selection.push(m.vars.find(v => v.name === c.dataset.sig));
+      else studio.selection.push(Object.assign({isEvent: true}, m.events.find(v => v.name === c.dataset.ev)));
+    }
+    renderSignals();
+  };
+}
+
+let waveGeom = null;
+function renderSignals() {
+  const m = studio.model;
+  if (studio.tab === 'wave') {
+    waveGeom = Wave.draw($('#wave'), m, studio.records, studio.selection, studio.cursor);
+  } else {
+    Wave.drawMsc($('#msc'), m, studio.records, studio.cursor, t => setCursor(t));
+  }
+  $('#timeinfo').textContent = `time axis in ticks${m.tick_ms ? ` (1 tick = ${m.tick_ms} ms)` : ''} · click to move the cursor; Back from a past tick branches there`;
+}
+
+// ---------------------------------------------------------------- actions
+async function stepOnce(n) {
+  if (busy || !studio.model) return null;
+  busy = true;
+  try {
+    if ($('#random').checked) return await send({op: 'random', n, seed: +$('#seed').value || 0});
+    const pulse = studio.armed;
+    studio.armed = {};
+    return await send({op: 'step', n, pulse});
+  } finally { busy = false; }
+}
+
+function setRunning(on) {
+  running = on;
+  $('#run').textContent = on ? '❚❚ Pause' : '▶▶ Run';
+  if (on) loop();
+}
+
+async function loop() {
+  while (running) {
+    const t0 = performance.now();
+    const r = await stepOnce(1);
+    if (!r || r.type === 'error' || (studio.run && studio.run.stop)) { setRunning(false); break; }
+    const wait = 1000 / +$('#rate').value - (performance.now() - t0);
+    if (wait > 0) await new Promise(res => setTimeout(res, wait));
+  }
+}
+
+async function back() {
+  const n = studio.records.length;
+  // From a past tick: branch there (keep ticks 0..cursor); else one tick back.
+  const to = studio.cursor < n - 1 ? studio.cursor + 1 : Math.max(0, (studio.run ? studio.run.ticks : n) - 1);
+  return send({op: 'back', tick: to});
+}
+
+function download(name, text) {
+  const a = document.createElement('a');
+  a.href = URL.createObjectURL(new Blob([text], {type: 'text/plain'}));
+  a.download = name;
+  a.click();
+  setTimeout(() => URL.revokeObjectURL(a.href), 1000);
+}
+
+function wire() {
+  $('#step').onclick = () => stepOnce(1);
+  $('#stepn').onclick = () => stepOnce(Math.max(1, Math.min(1000, +$('#n').value || 1)));
+  $('#run').onclick = () => setRunning(!running);
+  $('#back').onclick = back;
+  $('#forward').onclick = () => send({op: 'forward', n: 1});
+  $('#reset').onclick = () => { setRunning(false); studio.lastLoaded = null; send({op: 'reset'}); };
+  $('#cov').onchange = render;
+  $('#zoom').onchange = zoom;
+  $('#save').onclick = async () => {
+    const r = await send({op: 'save'});
+    download(`${studio.model.system}.scn`, r.text);
+  };
+  $('#load').onchange = async e => {
+    const f = e.target.files[0];
+    if (!f) return;
+    studio.lastLoaded = f.name;
+    await send({op: 'load_scenario', text: await f.text()});
+    e.target.value = '';
+  };
+  $('#wave').addEventListener('click', e => {
+    if (!waveGeom) return;
+    const r = e.target.getBoundingClientRect();
+    const t = waveGeom.tickAt(e.clientX - r.left);
+    if (t >= 0) setCursor(t);
+  });
+  $('#pick').onclick = () => { $('#picker').hidden = !$('#picker').hidden; };
+  for (const b of document.querySelectorAll('.tab[data-tab]')) {
+    b.onclick = () => {
+      studio.tab = b.dataset.tab;
+      for (const x of document.querySelectorAll('.tab[data-tab]')) x.classList.toggle('on', x === b);
+      $('#wavewrap').hidden = studio.tab !== 'wave';
+      $('#mscwrap').hidden = studio.tab !== 'msc';
+      renderSignals();
+    };
+  }
+  document.addEventListener('keydown', e => {
+    if (e.target.tagName === 'INPUT' || e.target.tagName === 'SELECT') return;
+    if (e.key === 'ArrowRight' || e.key === ' ') { e.preventDefault(); stepOnce(1); }
+    else if (e.key === 'ArrowLeft') { e.preventDefault(); back(); }
+    else if (e.key === 'p' || e.key === 'P') setRunning(!running);
+    else if (e.key === 'r' || e.key === 'R') $('#reset').click();
+  });
+  window.addEventListener('resize', () => renderSignals());
+}
+
+wire();
+connect();

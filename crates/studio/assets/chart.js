@@ -1,0 +1,278 @@
+// Chart drawing: one ELK layered layout per chart (hierarchy included, so transitions between
+// levels are routed), rendered as SVG the Stateflow way: rounded state boxes nested in their
+// parents, parallel regions as dashed boxes numbered in execution order, a dot and arrow for
+// default transitions, circles for junctions and history, `trigger [guard] / action` labels.
+'use strict';
+
+const Chart = (() => {
+  const NAME_W = 7.6, MONO_W = 6.6, LINE_H = 13, LABEL_MAX = 46;
+  const elk = new ELK();
+  // Exclusive (OR) levels: layered, top-down, transitions routed orthogonally across levels.
+  const LAYERED = {
+    'elk.algorithm': 'layered',
+    'elk.direction': 'DOWN',
+    'elk.hierarchyHandling': 'INCLUDE_CHILDREN',
+    'elk.layered.spacing.nodeNodeBetweenLayers': '34',
+    'elk.spacing.nodeNode': '26',
+    'elk.spacing.edgeLabel': '4',
+    'elk.spacing.edgeNode': '14',
+    'elk.layered.spacing.edgeNodeBetweenLayers': '12',
+    'elk.edgeLabels.inline': 'false',
+    'elk.layered.thoroughness': '4',
+    'elk.edgeRouting': 'ORTHOGONAL',
+  };
+  // Parallel (AND) levels: the regions packed in rows, as Stateflow tiles parallel states.
+  const PACK = {
+    'elk.algorithm': 'rectpacking',
+    'elk.aspectRatio': '1.9',
+    'elk.spacing.nodeNode': '14',
+    'elk.rectpacking.trybox': 'false',
+  };
+
+  function esc(s) {
+    return String(s).replace(/&/g, '&amp;').replace(/</g, '&lt;').replace(/>/g, '&gt;').replace(/"/g, '&quot;');
+  }
+
+  // Break a label into lines of at most `max` characters, preferring breaks after
+  // `&&`, `||`, `;`, `,` and before `/`.
+  function wrap(text, max) {
+    if (text.length <= max) return [text];
+    const words = text.split(' ');
+    const lines = [];
+    let cur = '';
+    for (const w of words) {
+      const brk = cur.length > 0 && (cur.length + 1 + w.length > max || (w === '/' && cur.length > max / 2));
+      if (brk) { lines.push(cur); cur = w; } else { cur = cur ? cur + ' ' + w : w; }
+    }
+    if (cur) lines.push(cur);
+    return lines.slice(0, 8).concat(lines.length > 8 ? ['…'] : []);
+  }
+
+  // The ELK graph of a chart, and the drawing facts ELK does not keep.
+  function graph(chart) {
+    const S = chart.states;
+    const internal = {};   // state id -> internal transition labels
+    for (const t of chart.transitions) {
+      if (t.dest.kind === 'internal') (internal[t.source] = internal[t.source] || []).push(t);
+    }
+    const info = {};        // elk id -> {kind, sid, lines, order}
+    const edges = [];
+    const edgeInfo = {};
+    const textLines = sid => {
+      const s = S[sid];
+      const lines = [];
+      if (s.actions.length) lines.push(s.actions.join(', ') + ':  …');
+      for (const t of internal[sid] || []) for (const l of wrap(t.label, LABEL_MAX)) lines.push(l);
+      return lines;
+    };
+    function node(sid, order) {
+      const s = S[sid];
+      const id = 's' + sid;
+      const lines = textLines(sid);
+      info[id] = {kind: s.region ? 'region' : (s.kind === 'simple' ? 'state' : 'composite'), sid, lines, order};
+      // Room for the name, the execution order and the coverage badge.
+      const nameW = s.name.length * NAME_W + (order ? 30 : 22) + 36;
+      const linesW = Math.max(0, ...lines.map(l => l.length * MONO_W)) + 18;
+      if (s.kind === 'simple') {
+        return {id, width: Math.max(86, nameW, linesW), height: 30 + lines.length * LINE_H};
+      }
+      const n = {id, children: [], edges: [], layoutOptions: Object.assign({
+        'elk.padding': `[top=${26 + lines.length * LINE_H},left=14,bottom=14,right=14]`,
+        'elk.nodeSize.constraints': 'MINIMUM_SIZE',
+        'elk.nodeSize.minimum': `(${Math.max(nameW, linesW)},40)`,
+      }, s.kind === 'and' ? PACK : LAYERED)};
+      fill(n, sid);
+      return n;
+    }
+    function fill(n, sid) {
+      const s = S[sid];
+      if (s.kind === 'and') {
+        s.children.forEach((c, k) => n.children.push(node(c, k + 1)));
+        return;
+      }
+      for (const c of s.children) n.children.push(node(c, 0));
+      if (s.initial !== null && s.initial !== undefined) {
+        const iid = 'i' + sid;
+        info[iid] = {kind: 'init'};
+        n.children.push({id: iid, width: 10, height: 10});
+        edges.push({id: 'ei' + sid, sources: [iid], targets: ['s' + s.initial]});
+        edgeInfo['ei' + sid] = {kind: 'init'};
+      }
+      if (s.history) {
+        const hid = 'h' + sid;
+        info[hid] = {kind: 'hist', deep: s.history === 'deep'};
+        n.children.push({id: hid, width: 20, height: 20});
+      }
+    }
+    const rootKind = S[0].kind;
+    const root = {id: 'root', children: [], edges: [], layoutOptions: Object.assign({
+      'elk.json.shapeCoords': 'ROOT',
+      'elk.json.edgeCoords': 'ROOT',
+      'elk.padding': '[top=12,left=12,bottom=12,right=12]',
+    }, rootKind === 'and' ? PACK : LAYERED)};
+    fill(root, 0);
+    // Junction nodes live in the source state's parent.
+    const parentNode = {};
+    (function index(n) { for (const c of n.children || []) { parentNode[c.id] = n; index(c); } })(root);
+    const label = (text, id) => {
+      const lines = wrap(text, LABEL_MAX);
+      // Room for the coverage badge after the text.
+      return [{id, text: lines.join('\n'), width: Math.max(...lines.map(l => l.length)) * MONO_W + 34, height: lines.length * LINE_H}];
+    };
+    let jn = 0;
+    function branches(t, from, list, counter, container) {
+      for (const b of list) {
+        const k = counter.k++;
+        const eid = `e${t.id}b${k}`;
+        edgeInfo[eid] = {kind: 'branch', t: t.id, b: k};
+        if (b.dest.kind === 'state') {
+          edges.push({id: eid, sources: [from], targets: ['s' + b.dest.state], labels: label(b.label, eid + 'l')});
+        } else if (b.dest.kind === 'choice') {
+          const j = 'j' + (jn++);
+          info[j] = {kind: 'junction'};
+          container.children.push({id: j, width: 12, height: 12});
+          edges.push({id: eid, sources: [from], targets: [j], labels: label(b.label, eid + 'l')});
+          branches(t, j, b.dest.branches, counter, container);
+        }
+      }
+    }
+    for (const t of chart.transitions) {
+      if (t.dest.kind === 'internal') continue;
+      const src = 's' + t.source;
+      const eid = 'e' + t.id;
+      if (t.dest.kind === 'state') {
+        edgeInfo[eid] = {kind: 'tr', t: t.id};
+        const e = {id: eid, sources: [src], targets: ['s' + t.dest.state]};
+        if (t.label) e.labels = label(t.label, eid + 'l');
+        edges.push(e);
+      } else {
+        const container = parentNode[src] || root;
+        const j = 'j' + (jn++);
+        info[j] = {kind: 'junction'};
+        container.children.push({id: j, width: 12, height: 12});
+        edgeInfo[eid] = {kind: 'tr', t: t.id};
+        const e = {id: eid, sources: [src], targets: [j]};
+        if (t.label) e.labels = label(t.label, eid + 'l');
+        edges.push(e);
+        branches(t, j, t.dest.branches, {k: 0}, container);
+      }
+    }
+    // Each edge goes to the innermost compound holding both ends (ELK lays out a level with
+    // its own edges; across levels only where the hierarchy is laid out as one).
+    (function index(n) { for (const c of n.children || []) { parentNode[c.id] = n; index(c); } })(root);
+    const chain = id => { const out = []; let n = parentNode[id]; while (n) { out.push(n); n = parentNode[n.id]; } return out; };
+    for (const e of edges) {
+      const a = chain(e.sources[0]), b = new Set(chain(e.targets[0]));
+      const lca = a.find(n => b.has(n)) || root;
+      lca.edges.push(e);
+    }
+    return {root, info, edgeInfo};
+  }
+
+  function pathOf(sections) {
+    let d = '';
+    for (const s of sections || []) {
+      const pts = [s.startPoint, ...(s.bendPoints || []), s.endPoint];
+      d += 'M' + pts.map(p => `${p.x.toFixed(1)},${p.y.toFixed(1)}`).join(' L');
+    }
+    return d;
+  }
+
+  // Lay out a chart; resolves to the SVG text (without instance-specific state).
+  async function layout(chart) {
+    const g = graph(chart);
+    const out = await elk.layout(g.root);
+    const parts = [];
+    const W = Math.ceil(out.width), H = Math.ceil(out.height);
+    parts.push(`<svg xmlns="http://www.w3.org/2000/svg" width="${W}" height="${H}" viewBox="0 0 ${W} ${H}">`);
+    parts.push('<defs><marker id="arrow" viewBox="0 0 10 10" refX="9" refY="5" markerWidth="7" markerHeight="7" orient="auto-start-reverse"><path d="M0,0 L10,5 L0,10 z" fill="#4a5366"/></marker>' +
+      '<marker id="arrowF" viewBox="0 0 10 10" refX="9" refY="5" markerWidth="6" markerHeight="6" orient="auto-start-reverse"><path d="M0,0 L10,5 L0,10 z" fill="#e0671b"/></marker></defs>');
+    const nodes = [];
+    (function walk(n, depth) { for (const c of n.children || []) { nodes.push([c, depth]); walk(c, depth + 1); } })(out, 0);
+    nodes.sort((a, b) => a[1] - b[1]);
+    for (const [n] of nodes) {
+      const inf = g.info[n.id];
+      if (!inf) continue;
+      const x = n.x, y = n.y, w = n.width, h = n.height;
+      if (inf.kind === 'init') {
+        parts.push(`<g class="init"><circle cx="${x + w / 2}" cy="${y + h / 2}" r="4.5"/></g>`);
+      } else if (inf.kind === 'junction') {
+        parts.push(`<g class="junction"><circle cx="${x + w / 2}" cy="${y + h / 2}" r="6"/></g>`);
+      } else if (inf.kind === 'hist') {
+        parts.push(`<g class="hist"><circle cx="${x + w / 2}" cy="${y + h / 2}" r="9.5"/><text x="${x + w / 2}" y="${y + h / 2 + 3.5}">${inf.deep ? 'H*' : 'H'}</text></g>`);
+      } else {
+        const s = chart.states[inf.sid];
+        const cls = 'st ' + (inf.kind === 'region' ? 'region' : inf.kind === 'composite' ? 'composite' : 'leaf');
+        const rx = inf.kind === 'region' ? 3 : 9;
+        parts.push(`<g class="${cls}" data-sid="${inf.sid}"><title>${esc(s.path)}</title><rect x="${x}" y="${y}" width="${w}" height="${h}" rx="${rx}"/>`);
+        parts.push(`<text class="name" x="${x + 8}" y="${y + 16}">${esc(s.name)}</text>`);
+        if (inf.order) parts.push(`<text class="acts" x="${x + w - 8}" y="${y + 14}" text-anchor="end">${inf.order}</text>`);
+        inf.lines.forEach((l, k) => parts.push(`<text class="acts" x="${x + 8}" y="${y + 30 + k * LINE_H}">${esc(l)}</text>`));
+        parts.push(`<g class="badge" data-badge-sid="${inf.sid}" transform="translate(${x + w - (inf.order ? 40 : 10)},${y + 4})"></g></g>`);
+      }
+    }
+    const allEdges = [];
+    (function walk(n) { for (const e of n.edges || []) allEdges.push(e); for (const c of n.children || []) walk(c); })(out);
+    for (const e of allEdges) {
+      const ei = g.edgeInfo[e.id] || {};
+      const attrs = ei.kind === 'tr' ? ` data-t="${ei.t}"` : ei.kind === 'branch' ? ` data-t="${ei.t}" data-b="${ei.b}"` : '';
+      parts.push(`<g class="tr ${ei.kind || ''}"${attrs}><path d="${pathOf(e.sections)}" marker-end="url(#arrow)"/>`);
+      for (const l of e.labels || []) {
+        const lines = l.text.split('\n');
+        lines.forEach((t, k) => parts.push(`<text x="${(l.x + 2).toFixed(1)}" y="${(l.y + 10 + k * LINE_H).toFixed(1)}">${esc(t)}</text>`));
+        parts.push(`<g class="badge" data-badge-t="${ei.t}" data-badge-b="${ei.b === undefined ? '' : ei.b}" transform="translate(${(l.x + l.width - 28).toFixed(1)},${(l.y).toFixed(1)})"></g>`);
+      }
+      parts.push('</g>');
+    }
+    parts.push('</svg>');
+    return parts.join('');
+  }
+
+  // Highlight one instance's chart for a tick record; coverage: counts per cover item or null.
+  function paint(svg, inst, rec, model, coverage) {
+    const active = new Set(rec && rec.active_ids ? rec.active_ids[inst] : []);
+    for (const g of svg.querySelectorAll('g.st')) g.classList.toggle('active', active.has(+g.dataset.sid));
+    const fired = new Set();
+    if (rec && rec.fired) {
+      for (const k of rec.fired) {
+        const c = model.covers[k];
+        if (c && c.instance === inst && c.kind !== 'state') fired.add(c.kind === 'branch' ? `${c.transition}/${c.branch}` : `${c.transition}`);
+      }
+    }
+    for (const g of svg.querySelectorAll('g.tr[data-t]')) {
+      const key = g.dataset.b !== undefined ? `${g.dataset.t}/${g.dataset.b}` : g.dataset.t;
+      const on = fired.has(key);
+      g.classList.toggle('fired', on);
+      const p = g.querySelector('path');
+      if (p) p.setAttribute('marker-end', on ? 'url(#arrowF)' : 'url(#arrow)');
+    }
+    // Coverage badges.
+    for (const b of svg.querySelectorAll('g.badge')) b.innerHTML = '';
+    for (const g of svg.querySelectorAll('.never')) g.classList.remove('never');
+    if (!coverage) return;
+    model.covers.forEach((c, k) => {
+      if (c.instance !== inst) return;
+      const n = coverage[k] || 0;
+      let holder, owner;
+      if (c.kind === 'state') {
+        holder = svg.querySelector(`g.badge[data-badge-sid="${c.state}"]`);
+        owner = svg.querySelector(`g.st[data-sid="${c.state}"]`);
+      } else if (c.kind === 'transition') {
+        holder = svg.querySelector(`g.badge[data-badge-t="${c.transition}"][data-badge-b=""]`);
+        owner = svg.querySelector(`g.tr[data-t="${c.transition}"]:not([data-b])`);
+      } else {
+        holder = svg.querySelector(`g.badge[data-badge-t="${c.transition}"][data-badge-b="${c.branch}"]`);
+        owner = svg.querySelector(`g.tr[data-t="${c.transition}"][data-b="${c.branch}"]`);
+      }
+      if (owner && n === 0) owner.classList.add('never');
+      if (holder) {
+        const txt = '×' + n;
+        const w = txt.length * 6 + 6;
+        const dx = c.kind === 'state' ? -w : 0;
+        holder.innerHTML = `<rect x="${dx}" y="0" width="${w}" height="13" rx="6.5" class="${n === 0 ? 'never' : ''}" style="fill:${n === 0 ? '#c0392b' : '#6a7383'}"/><text x="${dx + 3}" y="10">${txt}</text>`;
+      }
+    });
+  }
+
+  return {layout, paint, wrap};
+})();

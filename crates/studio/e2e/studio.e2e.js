@@ -1,0 +1,235 @@
+// End-to-end tests of `statecheck serve` in a real browser (Debian's chromium, driven by
+// playwright-core). Run: STATECHECK_BIN=path/to/statecheck node studio.e2e.js
+// Checks the page against `statecheck sim --json` of the scenario it saves, replays a
+// counterexample of `statecheck verify --cex-dir`, steps back and forward, and writes
+// screenshots to docs/studio/ (or $STUDIO_SHOTS).
+'use strict';
+
+const {chromium} = require('playwright-core');
+const {spawn, execFileSync} = require('child_process');
+const fs = require('fs');
+const os = require('os');
+const path = require('path');
+const assert = require('assert');
+
+const ROOT = path.resolve(__dirname, '../../..');
+const BIN = process.env.STATECHECK_BIN;
+const SHOTS = process.env.STUDIO_SHOTS || path.join(ROOT, 'docs/studio');
+const CHROMIUM = process.env.CHROMIUM || '/usr/bin/chromium';
+const TMP = fs.mkdtempSync(path.join(os.tmpdir(), 'studio-e2e-'));
+if (!BIN) { console.error('set STATECHECK_BIN to the statecheck binary'); process.exit(2); }
+
+const servers = [];
+function serve(model, system) {
+  const args = ['serve', model, '--port', '0'];
+  if (system) args.push('--system', system);
+  const p = spawn(BIN, args, {cwd: ROOT, stdio: ['ignore', 'pipe', 'pipe']});
+  servers.push(p);
+  return new Promise((resolve, reject) => {
+    let out = '';
+    const timer = setTimeout(() => reject(new Error('server did not start: ' + out)), 30000);
+    p.stdout.on('data', d => {
+      out += d;
+      const m = out.match(/(http:\/\/\S+)/);
+      if (m) { clearTimeout(timer); resolve(m[1]); }
+    });
+    p.stderr.on('data', d => { out += d; });
+    p.on('exit', c => reject(new Error(`server exited ${c}: ${out}`)));
+  });
+}
+
+function sim(model, system, scn) {
+  const args = ['sim', model, '--scenario', scn, '--json'];
+  if (system) args.push('--system', system);
+  let out;
+  try { out = execFileSync(BIN, args, {cwd: ROOT}); } catch (e) { out = e.stdout; }
+  return JSON.parse(out.toString());
+}
+
+async function open(page, url) {
+  const t0 = Date.now();
+  await page.goto(url);
+  await page.waitForFunction(() => window.studio && window.studio.ready && window.studio.run, null, {timeout: 30000});
+  return Date.now() - t0;
+}
+
+// Highlighted (active) state paths per instance, read from the drawn SVGs.
+async function highlighted(page) {
+  return page.evaluate(() => {
+    const s = window.studio, out = {};
+    s.model.instances.forEach((inst, k) => {
+      const chart = s.model.charts[inst.chart];
+      const svg = s.svgs[k];
+      out[inst.name] = [...svg.querySelectorAll('g.st.active')].map(g => chart.states[+g.dataset.sid].path).sort();
+    });
+    return out;
+  });
+}
+
+const sortActive = a => Object.fromEntries(Object.entries(a).map(([k, v]) => [k, [...v].sort()]));
+
+async function ticks(page) { return page.evaluate(() => window.studio.run.ticks); }
+async function waitTicks(page, n) {
+  await page.waitForFunction(n => window.studio.run && window.studio.run.ticks === n, n, {timeout: 30000});
+}
+
+async function setHeld(page, name, value) {
+  await page.evaluate(([name, value]) => window.studio.send({op: 'set', set: {[name]: value}}), [name, value]);
+}
+
+async function stepN(page, n) {
+  const before = await ticks(page);
+  await page.fill('#n', String(n));
+  await page.click('#stepn');
+  await waitTicks(page, before + n);
+}
+
+async function save(page, file) {
+  const [dl] = await Promise.all([page.waitForEvent('download'), page.click('#save')]);
+  await dl.saveAs(file);
+  return fs.readFileSync(file, 'utf8');
+}
+
+// The page's records and highlighted states against `sim --json` of its own saved scenario.
+async function checkAgainstSim(page, model, system, name) {
+  const file = path.join(TMP, name);
+  await save(page, file);
+  const ref = sim(model, system, file);
+  const recs = await page.evaluate(() => window.studio.records);
+  assert.strictEqual(recs.length, ref.ticks.length, 'tick count');
+  recs.forEach((r, k) => {
+    for (const key of ['tick', 'active', 'vars', 'events']) assert.deepStrictEqual(r[key], ref.ticks[k][key], `tick ${k} ${key}`);
+  });
+  const last = ref.ticks[ref.ticks.length - 1];
+  assert.deepStrictEqual(await highlighted(page), sortActive(last.active), 'highlighted states = sim --json');
+  return ref;
+}
+
+async function famClosedLoop(browser) {
+  const model = 'examples/fam/fam_system.sc';
+  const url = await serve(model);
+  const page = await browser.newPage({viewport: {width: 1680, height: 1050}, acceptDownloads: true});
+  const ms = await open(page, url);
+  console.log(`page load (fam_system.sc): ${ms} ms (layout ${Math.round(await page.evaluate(() => window.studio.layoutMs))} ms)`);
+  await page.selectOption('#preset', 'closed');
+  // The closed-loop preset shows the CCM and the faults only.
+  const shown = await page.$$eval('.ctl', els => els.map(e => e.dataset.input));
+  assert.ok(shown.includes('ctrl.ccm') && shown.includes('fam.stallNow') && !shown.includes('tie.low'), shown.join(','));
+  await page.fill('.ctl[data-input="ctrl.ccm"] input[type=number]', '1000');
+  await page.dispatchEvent('.ctl[data-input="ctrl.ccm"] input[type=number]', 'change');
+  await page.waitForFunction(() => window.studio.held['ctrl.ccm'] === 1000);
+  // The FAM runs from tick 13 on (its calibration move, by sim of `ctrl.ccm = 1000`): inject
+  // a stall for one tick while it runs, at tick 17.
+  await page.check('#cov');
+  await stepN(page, 17);
+  await page.click('.ctl[data-input="fam.stallNow"] button.pulse');
+  await page.click('#step');
+  await waitTicks(page, 18);
+  const rec = await page.evaluate(() => window.studio.records[17]);
+  assert.deepStrictEqual(rec.vars['fam.stallNow'], true, 'the pulse reached tick 17');
+  assert.ok(rec.active.fam.includes('stallHandler.stallMode'), 'the FAM stalled: ' + rec.active.fam);
+  assert.deepStrictEqual(await highlighted(page), sortActive(rec.active));
+  await stepN(page, 2);
+  await page.screenshot({path: path.join(SHOTS, 'fam_closed_loop.png')});
+  await stepN(page, 31);
+  const ref = await checkAgainstSim(page, model, null, 'fam.scn');
+  // Step back: the chart shows tick 49 as sim has it; forward again: tick 50.
+  await page.click('#back');
+  await waitTicks(page, 50);
+  assert.deepStrictEqual(await highlighted(page), sortActive(ref.ticks[49].active), 'after back');
+  await page.click('#forward');
+  await waitTicks(page, 51);
+  assert.deepStrictEqual(await highlighted(page), sortActive(ref.ticks[50].active), 'after forward');
+  await stepN(page, 60);
+  await checkAgainstSim(page, model, null, 'fam2.scn');
+  await page.click('.tab[data-tab="msc"]');
+  await page.screenshot({path: path.join(SHOTS, 'sequence.png')});
+  const msgs = await page.$$eval('#msc g.msg', g => g.length);
+  assert.ok(msgs > 0, 'the sequence view shows messages between instances');
+  await page.close();
+}
+
+async function counterexample(browser) {
+  const model = 'examples/fam/fam_alone.sc', system = 'FamAloneSmall';
+  const dir = path.join(TMP, 'cex');
+  try {
+    execFileSync(BIN, ['verify', model, '--system', system, '--property', 'fam_cof_with_notcalib', '--cex-dir', dir], {cwd: ROOT, stdio: 'ignore'});
+  } catch (e) { assert.strictEqual(e.status, 1, 'verify: violated'); }
+  const cex = path.join(dir, 'fam_cof_with_notcalib.scn');
+  const ref = sim(model, system, cex);
+  assert.strictEqual(ref.result.status, 'violated');
+  const url = await serve(model, system);
+  const page = await browser.newPage({viewport: {width: 1680, height: 1000}, acceptDownloads: true});
+  await open(page, url);
+  await page.selectOption('#preset', 'fam');
+  await page.setInputFiles('#load', cex);
+  await waitTicks(page, ref.ticks.length);
+  const stop = await page.evaluate(() => window.studio.run.stop);
+  assert.strictEqual(stop.tick, ref.result.tick, 'violating tick');
+  assert.strictEqual(stop.message, ref.result.message);
+  const status = await page.textContent('#status');
+  assert.ok(status.includes(`violated at tick ${ref.result.tick}`), status);
+  const marked = await page.$eval('#messages .msg', d => +d.dataset.t);
+  assert.strictEqual(marked, ref.result.tick, 'the violating tick is marked');
+  assert.deepStrictEqual(await highlighted(page), sortActive(ref.ticks[ref.ticks.length - 1].active));
+  await page.check('#cov');
+  await page.screenshot({path: path.join(SHOTS, 'counterexample.png')});
+  // Branch here: back one tick and continue interactively.
+  await page.click('#back');
+  await waitTicks(page, ref.ticks.length - 1);
+  // fam_alone.sc assumes no new major fault while one is set: choose no fault, then step.
+  await page.selectOption('.ctl[data-input="env.fault"] select', 'NONE');
+  await page.waitForFunction(() => window.studio.held['env.fault'] === 'NONE');
+  await page.click('#step');
+  await waitTicks(page, ref.ticks.length);
+  await checkAgainstSim(page, model, system, 'branch.scn');
+  await page.close();
+}
+
+async function fam5(browser) {
+  const model = 'examples/fam/fam_system5.sc';
+  const url = await serve(model);
+  const page = await browser.newPage({viewport: {width: 1920, height: 1200}, acceptDownloads: true});
+  const ms = await open(page, url);
+  console.log(`page load (fam_system5.sc), first visit: ${ms} ms (layout ${Math.round(await page.evaluate(() => window.studio.layoutMs))} ms)`);
+  const again = await open(page, url);
+  console.log(`page load (fam_system5.sc), reload with the layout cached: ${again} ms`);
+  await page.check('#random');
+  await page.fill('#seed', '5');
+  await page.fill('#n', '80');
+  await page.click('#stepn');
+  await page.waitForFunction(() => window.studio.run.ticks > 0);
+  await page.waitForTimeout(300);
+  await checkAgainstSim(page, model, null, 'fam5.scn');
+  await page.screenshot({path: path.join(SHOTS, 'fam_system5.png')});
+  await page.close();
+  return ms;
+}
+
+async function linearDrive(browser) {
+  const model = 'examples/linear_drive/linear_drive.sc';
+  const url = await serve(model);
+  const page = await browser.newPage({viewport: {width: 1500, height: 950}, acceptDownloads: true});
+  await open(page, url);
+  await page.check('#random');
+  await page.fill('#n', '25');
+  await page.click('#stepn');
+  await page.waitForFunction(() => window.studio.run.ticks > 0);
+  await page.waitForTimeout(300);
+  await checkAgainstSim(page, model, null, 'linear.scn');
+  await page.screenshot({path: path.join(SHOTS, 'linear_drive.png')});
+  await page.close();
+}
+
+(async () => {
+  fs.mkdirSync(SHOTS, {recursive: true});
+  const browser = await chromium.launch({executablePath: CHROMIUM, args: ['--no-sandbox', '--disable-gpu']});
+  let failed = false;
+  for (const [name, t] of [['fam closed loop', famClosedLoop], ['counterexample', counterexample], ['fam_system5', fam5], ['linear drive', linearDrive]]) {
+    try { await t(browser); console.log(`ok   ${name}`); } catch (e) { failed = true; console.log(`FAIL ${name}: ${e.stack || e}`); }
+  }
+  await browser.close();
+  for (const s of servers) s.kill();
+  fs.rmSync(TMP, {recursive: true, force: true});
+  process.exit(failed ? 1 : 0);
+})();
