@@ -39,6 +39,7 @@ pub const CODES: &[CodeInfo] = &[
     code("E0002", "unterminated block comment", "A `/*` comment is never closed and runs to the end of the file. Close it with `*/`; block comments do not nest.", "grammar.md"),
     code("E0003", "integer literal out of range", "The literal does not fit in a signed 64-bit integer. Values of variables are bounded by their `int[lo..hi]` type anyway.", "language.md"),
     code("E0004", "malformed integer literal", "A digit that is invalid for the base, or no digits after `0x`/`0b`.", "language.md"),
+    code("E0005", "source is not UTF-8", "A model file must be UTF-8 text; the diagnostic points at the first byte that is not.", "language.md"),
     code("E0010", "unexpected token", "The parser expected something else here (the message says what); it skipped to the next `;`, `}` or keyword and went on.", "grammar.md"),
     code("E0011", "missing `;`", "Declarations, transitions and statements end with `;`.", "grammar.md"),
     code("E0012", "unclosed delimiter", "A `{`, `(` or `[` is never closed; the secondary label shows where it was opened.", "grammar.md"),
@@ -50,6 +51,7 @@ pub const CODES: &[CodeInfo] = &[
     code("E0018", "malformed duration", "A duration is a number, name or parenthesised expression followed by `ms`, `s` or `min`, e.g. `after(3 s)`, `tick 100 ms;`.", "language.md"),
     code("E0019", "`if` expression as an operand", "An `if … then … else …` expression used as an operand needs parentheses: `(if c then a else b) + 1`.", "language.md"),
     code("E0020", "missing `return`", "A function body with braces is `let` bindings followed by one `return expr;`.", "language.md"),
+    code("E0030", "malformed CTL until", "A CTL until is written `A[p U q]` or `E[p U q]`; the `U` is missing.", "properties.md"),
     code("E0101", "unknown name", "A name (variable, event, constant, enum literal, type, function, state, chart, instance) is not declared where it is used. The hint suggests a similar declared name when there is one.", "language.md"),
     code("E0102", "declared twice", "Two declarations of the same kind share a name in one scope (charts, systems, variables, properties, …).", "language.md"),
     code("E0103", "type mismatch", "An expression has the wrong type for its place: a condition that is not `bool`, an `int` given to a `bool`, an enum literal of another enum, an event used as a value, a connection between ports of different types.", "language.md"),
@@ -72,6 +74,9 @@ pub const CODES: &[CodeInfo] = &[
     code("E0121", "observer without `error` state", "An observer reports a violation by entering its top-level state `error`; declare one.", "properties.md"),
     code("E0122", "bad `order`", "`order` lists each instance once and never observers (which always run last).", "language.md"),
     code("E0123", "bad connection", "A connection is `connect instance.output -> instance.input;` between existing ports of one type; `[*]` only on the receiving side; an input is driven at most once.", "language.md"),
+    code("E0124", "too many junctions on one transition", "A transition passes through more junctions than the checker expands (on one path or in all); simplify the junction graph.", "language.md"),
+    code("E0160", "CTL operator in an LTL formula", "`ltl` formulas use the temporal operators `G F X U R W` without path quantifiers; `A`/`E` belong to `ctl` formulas.", "properties.md"),
+    code("E0161", "LTL operator in a CTL formula", "In a `ctl` formula every temporal operator needs a path quantifier: `AG`, `EF`, `A[p U q]`, ….", "properties.md"),
     code("E0131", "transition leaves the chart's top level", "The lowering refuses a transition whose source and target lie in different top-level regions, or that would leave the chart.", "semantics.md"),
     code("W0201", "no initial value", "A variable without `= value` starts at its type's default (the lowest value, `false`, the first literal); say it explicitly.", "lints.md"),
     code("W0202", "instance connected to itself", "The input reads the instance's own output as of the previous tick.", "lints.md"),
@@ -105,9 +110,8 @@ pub const CODES: &[CodeInfo] = &[
     code("E0806", "scenario: variable without a value", "A bare name makes an event present; an input variable needs `name = value`.", "language.md"),
     code("E0807", "scenario: value out of range", "The value lies outside the input's declared range `int[lo..hi]`.", "language.md"),
     code("E0808", "scenario: value of the wrong type", "A `bool` takes `true` or `false` (not `1` or `0`), an enum one of its literals, an integer a decimal, hex or binary literal.", "language.md"),
+    code("E0810", "scenario: misplaced `loop:`", "A scenario has at most one `loop:` line; it follows the first tick and precedes at least one tick (tick 0 only initialises).", "language.md"),
     code("E0809", "scenario: too long", "The scenario would expand (with its `* N` repeats) to more ticks than a run may have.", "language.md"),
-    code("E0810", "scenario: second loop", "A scenario has at most one `loop:` line: the ticks after it repeat forever (a lasso).", "properties.md"),
-    code("E0811", "scenario: misplaced loop", "The `loop:` line must follow the first tick (tick 0 only initialises) and precede at least one tick.", "properties.md"),
 ];
 
 /// The entry of a code (case-insensitive), if any.

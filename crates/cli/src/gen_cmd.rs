@@ -1,7 +1,7 @@
 //! `statecheck gen`: code generation (C99, Rust, Modelica) from the IR.
 
 use crate::load;
-use anyhow::{bail, Context, Result};
+use anyhow::{bail, Result};
 use clap::Args;
 use statecheck_codegen::Source;
 use statecheck_ir::view::TraceView;
@@ -94,11 +94,10 @@ fn out_dir(o: Option<&str>) -> Result<&Path> {
     let Some(d) = o else {
         bail!("give an output directory with -o DIR")
     };
-    let p = Path::new(d);
-    std::fs::create_dir_all(p).with_context(|| format!("cannot create `{d}`"))?;
-    Ok(p)
+    crate::outpath::create_dir(d, "-o")?;
+    Ok(Path::new(d))
 }
 
 fn write(path: &Path, text: &str) -> Result<()> {
-    std::fs::write(path, text).with_context(|| format!("cannot write `{}`", path.display()))
+    crate::outpath::write(path, text.as_bytes())
 }

@@ -129,7 +129,27 @@ impl std::error::Error for ModelErrors {}
 
 /// Read and check a model; print its diagnostics (warnings only if `show_warnings`).
 pub fn load(path: &str, show_warnings: bool) -> Result<Loaded> {
-    let text = std::fs::read_to_string(path).with_context(|| format!("cannot read `{path}`"))?;
+    crate::outpath::note_input(path);
+    let bytes = std::fs::read(path).with_context(|| format!("cannot read `{path}`"))?;
+    let source = match String::from_utf8(bytes) {
+        Ok(s) => s,
+        Err(e) => {
+            // A model error at the offending byte (exit 1), not a failure to read (exit 2).
+            let at = e.utf8_error().valid_up_to();
+            let bad = e.as_bytes().get(at).copied().unwrap_or(0);
+            let shown = String::from_utf8_lossy(e.as_bytes()).into_owned();
+            let d = Diagnostic::error(
+                "E0005",
+                format!("the file is not valid UTF-8 (byte 0x{bad:02X} at offset {at})"),
+                // In the text shown the byte became U+FFFD, three bytes long.
+                statecheck_base::Span::new(at, at + '\u{FFFD}'.len_utf8()),
+            )
+            .with_label("not UTF-8")
+            .with_hint("save the file as UTF-8");
+            diag::eprint(path, &shown, &[d]);
+            return Err(ModelErrors.into());
+        }
+    };
     let key = std::fs::canonicalize(path)
         .map_or_else(|_| path.to_string(), |p| p.to_string_lossy().into_owned());
     let mut resolver = FsResolver {
@@ -139,7 +159,7 @@ pub fn load(path: &str, show_warnings: bool) -> Result<Loaded> {
     let root = FileText {
         key,
         name: path.to_string(),
-        text,
+        text: source,
     };
     let program = statecheck_model::imports::load(root, &mut resolver);
     let (file, sources, mut diags) = (program.file, program.sources, program.diags);

@@ -10,9 +10,12 @@ mod export_cmd;
 mod fmt_cmd;
 mod gen_cmd;
 mod load;
+mod outpath;
 mod output;
 mod serve_cmd;
 mod sim_cmd;
+mod sim_sink;
+mod supervisor;
 mod synth_cmd;
 mod verify_cmd;
 
@@ -174,6 +177,7 @@ fn run(cli: Cli) -> Result<u8> {
             let program = loaded.lower(sys)?;
             let counts = match coverage {
                 Some(f) => {
+                    outpath::note_input(&f);
                     let text = std::fs::read_to_string(&f)
                         .map_err(|e| anyhow::anyhow!("cannot read `{f}`: {e}"))?;
                     let v: serde_json::Value = serde_json::from_str(&text)
@@ -214,7 +218,7 @@ fn explain(code: Option<&str>) -> Result<u8> {
 pub fn write_out(path: Option<&str>, text: &str) -> Result<()> {
     use std::io::Write;
     match path {
-        Some(p) => std::fs::write(p, text).map_err(|e| anyhow::anyhow!("cannot write `{p}`: {e}")),
+        Some(p) => outpath::write(std::path::Path::new(p), text.as_bytes()),
         None => {
             let mut out = std::io::stdout().lock();
             // A closed pipe (e.g. `| head`) is not an error worth reporting.

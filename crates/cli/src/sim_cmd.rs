@@ -2,11 +2,12 @@
 
 use crate::load;
 use crate::output;
+use crate::sim_sink::{Format, SimSink};
 use crate::{write_out, Exit};
 use anyhow::{bail, Result};
 use clap::Args;
 use statecheck_ir::view::TraceView as Views;
-use statecheck_sim::{random::RandomInputs, scenario, Options, ScenarioInputs, Stop};
+use statecheck_sim::{random::RandomInputs, scenario, NoInput, Options, ScenarioInputs, Stop};
 
 /// Arguments of `statecheck sim`.
 #[derive(Args)]
@@ -52,10 +53,33 @@ pub fn run(a: SimArgs) -> Result<u8> {
     let program = loaded.lower(sys)?;
     let opts = Options {
         coverage: a.coverage.is_some(),
-        no_trace: false,
+        no_trace: true,
     };
-    let run = match (&a.scenario, a.random) {
+    let views = Views::new(&loaded.model, &program);
+    let format = if a.json {
+        Format::Json
+    } else if a.csv {
+        Format::Csv
+    } else if a.quiet {
+        Format::Quiet
+    } else {
+        Format::Table
+    };
+    let tick_ms = loaded.model.tick_ms.unwrap_or(1);
+    let sink = |views| {
+        SimSink::new(
+            &program,
+            views,
+            format,
+            a.vcd.as_deref().map(|f| (f, tick_ms)),
+            a.save_scenario.as_deref(),
+        )
+    };
+    let (run, sink) = match (&a.scenario, a.random) {
         (Some(path), _) => {
+            if path != "-" {
+                crate::outpath::note_input(path);
+            }
             let text = if path == "-" {
                 let mut t = String::new();
                 std::io::Read::read_to_string(&mut std::io::stdin(), &mut t)
@@ -73,11 +97,16 @@ pub fn run(a: SimArgs) -> Result<u8> {
                     } else {
                         path.as_str()
                     };
-                    crate::diag::eprint(shown, &text, &scenario_diagnostics(&text, &errs));
+                    let (kept, more) = crate::diag::cap_scenario_errors(&errs);
+                    crate::diag::eprint(shown, &text, &scenario_diagnostics(&text, &kept));
+                    eprint!("{more}");
                     return Err(Exit(1).into());
                 }
             };
+            let mut sink = sink(&views)?;
             if sc.loop_start.is_some() {
+                // A lasso is replayed in memory (its loop runs twice and the recurrence of
+                // the loop's first state is checked), then rendered tick by tick.
                 let l = statecheck_sim::lasso::run_lasso(&program, &sc, opts);
                 if let Some(why) = &l.broken {
                     eprintln!("error: {why} ({path})");
@@ -86,62 +115,98 @@ pub fn run(a: SimArgs) -> Result<u8> {
                 if !l.fair {
                     eprintln!("note: the lasso is not fair (a `fair` constraint fails on its loop); temporal properties were not evaluated");
                 }
-                l.run
+                for (t, inputs) in l.run.inputs.iter().enumerate() {
+                    statecheck_sim::Sink::inputs(&mut sink, t as u64, inputs);
+                }
+                for rec in &l.run.trace {
+                    statecheck_sim::Sink::tick(&mut sink, rec.tick, &rec.slots);
+                }
+                (l.run, sink)
             } else {
-                statecheck_sim::run(&program, &mut ScenarioInputs::new(&sc), opts)
+                let run = statecheck_sim::run_streaming(
+                    &program,
+                    &mut ScenarioInputs::new(&sc),
+                    opts,
+                    &mut sink,
+                );
+                (run, sink)
             }
         }
-        (None, Some(n)) => statecheck_sim::run(&program, &mut RandomInputs::new(a.seed, n), opts),
+        (None, Some(n)) => {
+            let mut source = RandomInputs::new(&program, a.seed, n);
+            let mut sink = sink(&views)?;
+            let run = statecheck_sim::run_streaming(&program, &mut source, opts, &mut sink);
+            (run, sink)
+        }
         (None, None) => {
             bail!("give a scenario (--scenario FILE) or a number of random ticks (--random N)")
         }
     };
-    let views = Views::new(&loaded.model, &program);
-    if let Some(f) = &a.save_scenario {
-        let sc = scenario::from_input_vectors(&program, &run.inputs);
-        write_out(Some(f), &scenario::format(&sc, &program))?;
-    }
-    if let Some(f) = &a.vcd {
-        write_out(
-            Some(f),
-            &output::vcd::render(
-                &program,
-                &views,
-                &run.trace,
-                loaded.model.tick_ms.unwrap_or(1),
+    let (mut status, code, mut message) = describe_stop(&run.stop, &program, &loaded.sources);
+    if let Some(why) = run.no_input {
+        let initial;
+        let slots = match &sink.last {
+            Some(l) => l.as_slice(),
+            None => {
+                initial = statecheck_ir::Machine::new(&program);
+                initial.slots()
+            }
+        };
+        let state = output::table::state_line(&program, &views, slots);
+        let tick = tick_of(&run.stop);
+        let after = match tick {
+            0 => "the initial state".to_string(),
+            t => format!("the state after tick {}", t - 1),
+        };
+        message = match why {
+            NoInput::Deadlock { assume } => {
+                status = "deadlock";
+                format!(
+                    "deadlock at tick {tick}: no input satisfies the `assume`s (`assume` #{} blocks) in {after}: {state}",
+                    assume + 1,
+                )
+            }
+            NoInput::NotFound { assume } => format!(
+                "no random inputs satisfying `assume` #{} found at tick {tick} within {} draws, in {after}: {state}",
+                assume + 1,
+                statecheck_sim::random::MAX_TRIES,
             ),
-        )?;
+        };
     }
-    let (status, code, message) = describe_stop(&run.stop, &program, &loaded.sources);
+    let mut json_tail = String::new();
     if a.json {
-        let ticks: Vec<serde_json::Value> = run
-            .trace
-            .iter()
-            .map(|r| output::json::tick(&program, &views, r))
-            .collect();
         let reached: serde_json::Map<String, serde_json::Value> = run
             .reached
             .iter()
             .map(|(n, t)| (n.clone(), serde_json::json!(t)))
             .collect();
-        let mut obj = serde_json::json!({"ticks": ticks, "result": {"status": status, "message": message}, "reached": reached});
-        if let Stop::Violation { tick, property } = &run.stop {
-            obj["result"]["tick"] = serde_json::json!(tick);
-            obj["result"]["property"] = serde_json::json!(property);
+        let mut result = serde_json::json!({"status": status, "message": message});
+        match &run.stop {
+            Stop::Violation { tick, property } => {
+                result["tick"] = serde_json::json!(tick);
+                result["property"] = serde_json::json!(property);
+            }
+            Stop::RuntimeError { tick, error } => {
+                result["tick"] = serde_json::json!(tick);
+                result["property"] = serde_json::json!(error.kind.builtin_property());
+            }
+            Stop::AssumeViolated { tick, assume } => {
+                result["tick"] = serde_json::json!(tick);
+                result["assume"] = serde_json::json!(assume + 1);
+            }
+            Stop::Completed => {}
         }
-        if let Stop::RuntimeError { tick, error } = &run.stop {
-            obj["result"]["tick"] = serde_json::json!(tick);
-            obj["result"]["property"] = serde_json::json!(error.kind.builtin_property());
-        }
+        json_tail = format!(
+            "\"result\":{},\"reached\":{}",
+            serde_json::to_string(&result)?,
+            serde_json::to_string(&reached)?
+        );
         if let (Some(counts), Some(_)) = (&run.coverage, &a.coverage) {
-            obj["coverage"] = output::coverage::to_json(&program, counts, &loaded.sources);
+            let c = output::coverage::to_json(&program, counts, &loaded.sources);
+            json_tail.push_str(&format!(",\"coverage\":{}", serde_json::to_string(&c)?));
         }
-        write_out(None, &format!("{}\n", serde_json::to_string(&obj)?))?;
-    } else if a.csv {
-        write_out(None, &output::csv::render(&program, &views, &run.trace))?;
-    } else if !a.quiet {
-        write_out(None, &output::table::render(&program, &views, &run.trace))?;
     }
+    sink.finish(&json_tail)?;
     if let (Some(counts), Some(file)) = (&run.coverage, &a.coverage) {
         if !a.quiet && !a.json {
             eprint!(
@@ -163,6 +228,16 @@ pub fn run(a: SimArgs) -> Result<u8> {
     Ok(code)
 }
 
+/// The tick at which a run stopped (0 when it completed).
+fn tick_of(stop: &Stop) -> u64 {
+    match stop {
+        Stop::Completed => 0,
+        Stop::RuntimeError { tick, .. }
+        | Stop::Violation { tick, .. }
+        | Stop::AssumeViolated { tick, .. } => *tick,
+    }
+}
+
 /// Status word, exit code and a message for how a run ended.
 fn describe_stop(
     stop: &Stop,
@@ -171,18 +246,33 @@ fn describe_stop(
 ) -> (&'static str, u8, String) {
     match stop {
         Stop::Completed => ("completed", 0, "run completed".into()),
-        Stop::Violation { tick, property } => ("violated", 4, format!("property `{property}` violated at tick {tick}")),
+        Stop::Violation { tick, property } => (
+            "violated",
+            4,
+            format!("property `{property}` violated at tick {tick}"),
+        ),
         Stop::RuntimeError { tick, error } => {
             let at = p
                 .sites
                 .get(error.site as usize)
                 .map(|s| format!(" at {}", sources.position(s.span)));
-            ("runtime_error", 1, format!("run-time error at tick {tick}: {}{}", p.describe_error(error), at.unwrap_or_default()))
+            (
+                "runtime_error",
+                1,
+                format!(
+                    "run-time error at tick {tick}: {}{}",
+                    p.describe_error(error),
+                    at.unwrap_or_default()
+                ),
+            )
         }
         Stop::AssumeViolated { tick, assume } => (
             "assume_violated",
             1,
-            format!("the inputs of tick {tick} violate `assume` #{} of the system (or no random inputs satisfy it)", assume + 1),
+            format!(
+                "the inputs of tick {tick} violate `assume` #{} of the system",
+                assume + 1
+            ),
         ),
     }
 }

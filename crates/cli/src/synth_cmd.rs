@@ -9,11 +9,12 @@
 //! Standard output may be a closed pipe (`synth … | head`): printing stops quietly, and the
 //! `-o` file is written before anything is printed.
 
+use crate::supervisor::{print_report, problem};
 use crate::{diag, load, write_out};
 use anyhow::{anyhow, bail, Result};
 use clap::Args;
 use statecheck_synth::{
-    check, emit, extract, synthesize_with, Engine, ErrorKind, Limits, Options, Outcome, Problem,
+    check, emit, synthesize_with, Engine, ErrorKind, Limits, Options, Outcome, Problem,
 };
 use std::io::Write;
 use std::sync::atomic::{AtomicBool, Ordering};
@@ -57,17 +58,6 @@ pub struct SynthArgs {
     /// Print only one line: engine, time, product and supervisor sizes (or "no supervisor").
     #[arg(long, short)]
     quiet: bool,
-}
-
-/// Read a model and build the synthesis problem of one of its systems.
-fn problem(path: &str, system: Option<&str>) -> Result<Problem> {
-    let loaded = load::load(path, false)?;
-    let file = &loaded.file;
-    let sys = extract::find_system(file, system).map_err(|e| anyhow!("{path}: {e}"))?;
-    extract::extract(file, sys).map_err(|diags| {
-        diag::eprint_sources(&loaded.sources, &diags);
-        anyhow::Error::new(load::ModelErrors)
-    })
 }
 
 /// Parse a size such as `512M`, `2G`, `1.5GiB`, `1000000` (bytes).
@@ -251,39 +241,4 @@ fn check_text(p: &Problem, text: &str, name: &str) -> Result<check::Report> {
         anyhow::Error::new(load::ModelErrors)
     })?;
     check::check(p, &model, &program).map_err(|e| anyhow!("{name}: {e}"))
-}
-
-fn print_report(r: &check::Report, quiet: bool) {
-    if !quiet {
-        out!(
-            "closed loop: {} states ({} plant states), {} event transitions",
-            r.closed_loop_states,
-            r.plant_states,
-            r.event_transitions
-        );
-    }
-    if r.violations.is_empty() {
-        out!("supervisor check: controllable, nonblocking, requirements hold");
-    } else {
-        for v in &r.violations {
-            out!("violation: {v}");
-        }
-    }
-}
-
-/// `statecheck verify SUP.sc --plant MODEL.sc`: check a supervisor system against a plant.
-pub fn verify_supervisor(
-    sup_path: &str,
-    sup_system: Option<&str>,
-    plant_path: &str,
-    plant_system: Option<&str>,
-    quiet: bool,
-) -> Result<u8> {
-    let p = problem(plant_path, plant_system)?;
-    let loaded = load::load(sup_path, false)?;
-    let sys = loaded.system(sup_system)?;
-    let program = loaded.lower(sys)?;
-    let r = check::check(&p, &loaded.model, &program).map_err(|e| anyhow!("{sup_path}: {e}"))?;
-    print_report(&r, quiet);
-    Ok(if r.violations.is_empty() { 0 } else { 1 })
 }

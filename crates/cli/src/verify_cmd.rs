@@ -106,7 +106,7 @@ impl From<BackendArg> for Backend {
 pub fn run(a: VerifyArgs) -> Result<u8> {
     if let Some(plant) = &a.plant {
         let (sys, psys) = (a.system.as_deref(), a.plant_system.as_deref());
-        return crate::synth_cmd::verify_supervisor(&a.model, sys, plant, psys, a.quiet);
+        return crate::supervisor::verify_supervisor(&a.model, sys, plant, psys, a.quiet);
     }
     // --- end supervisor check ---
     let max_memory = match &a.max_memory {

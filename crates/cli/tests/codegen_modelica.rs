@@ -684,7 +684,7 @@ fn random_runs_run_as_in_the_simulator() {
         for seed in 1..=3 {
             let run = statecheck_sim::run(
                 &l.program,
-                &mut RandomInputs::new(seed, ticks),
+                &mut RandomInputs::new(&l.program, seed, ticks),
                 statecheck_sim::Options {
                     coverage: true,
                     no_trace: false,
@@ -763,7 +763,7 @@ fn every_translation_path_runs_as_in_the_simulator() {
         for seed in 1..=40 {
             let run = statecheck_sim::run(
                 &l.program,
-                &mut RandomInputs::new(seed, 30),
+                &mut RandomInputs::new(&l.program, seed, 30),
                 statecheck_sim::Options {
                     coverage: true,
                     no_trace: false,

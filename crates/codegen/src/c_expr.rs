@@ -67,6 +67,28 @@ pub(crate) fn pure(p: &Program, e: u32) -> bool {
     }
 }
 
+/// The arms of an `if` whose `else` holds exactly one `if` (and so on): `(condition, body)` in
+/// order, and the final `else`. Walking it is a loop, where recursing on the `else` would go
+/// as deep as a state has transitions.
+pub(crate) fn else_if_chain<'s>(
+    cond: u32,
+    then: &'s [Stmt],
+    otherwise: &'s [Stmt],
+) -> (Vec<(u32, &'s [Stmt])>, &'s [Stmt]) {
+    let mut arms = vec![(cond, then)];
+    let mut rest = otherwise;
+    while let [Stmt::If {
+        cond,
+        then,
+        otherwise,
+    }] = rest
+    {
+        arms.push((*cond, then.as_slice()));
+        rest = otherwise;
+    }
+    (arms, rest)
+}
+
 /// Every expression local bound or read in `stmts` (not through calls: each procedure
 /// declares its own).
 pub(crate) fn lets_in_stmts(
@@ -82,9 +104,12 @@ pub(crate) fn lets_in_stmts(
                 then,
                 otherwise,
             } => {
-                lets_in_expr(p, *cond, acc);
-                lets_in_stmts(p, then, acc);
-                lets_in_stmts(p, otherwise, acc);
+                let (arms, rest) = else_if_chain(*cond, then, otherwise);
+                for (c, body) in arms {
+                    lets_in_expr(p, c, acc);
+                    lets_in_stmts(p, body, acc);
+                }
+                lets_in_stmts(p, rest, acc);
             }
             Stmt::Switch { cases, .. } => cases.iter().for_each(|c| lets_in_stmts(p, c, acc)),
             Stmt::Call(_) | Stmt::Cover(_) => {}
@@ -295,9 +320,11 @@ impl CEmit<'_> {
             BinOp::Le => c("<="),
             BinOp::Gt => c(">"),
             BinOp::Ge => c(">="),
-            BinOp::BitOr => format!("({x} | {y})"),
+            // Through the identity `sc_v`: gcc's -Wtautological-compare rejects a comparison
+            // of `x | K` or `x & K` with a constant it can decide, such as `(x | 4) != 1`.
+            BinOp::BitOr => format!("sc_v({x} | {y})"),
             BinOp::BitXor => format!("({x} ^ {y})"),
-            BinOp::BitAnd => format!("({x} & {y})"),
+            BinOp::BitAnd => format!("sc_v({x} & {y})"),
             BinOp::Div | BinOp::Rem if is_pure => {
                 let s = if op == BinOp::Div { "/" } else { "%" };
                 format!("({x} {s} {y})")
@@ -321,6 +348,83 @@ impl CEmit<'_> {
     pub(crate) fn block(&mut self, stmts: &[Stmt]) {
         for s in stmts {
             self.stmt(s);
+        }
+    }
+
+    /// An `if` and the `else if`s nested in its `else` (a state's transitions in priority
+    /// order), emitted flat: the chain is walked in a loop, so neither the output's indentation
+    /// nor the emitter's recursion grows with its length. Conditions without temporaries become
+    /// `else if`; otherwise the arms go in a `do { .. } while (0)` that each taken arm leaves
+    /// with `break`.
+    fn if_chain(&mut self, cond: u32, then: &[Stmt], otherwise: &[Stmt]) {
+        let p = self.p;
+        let (arms, rest) = else_if_chain(cond, then, otherwise);
+        if arms.len() > 1 && arms.iter().all(|(c, _)| pure(p, *c)) {
+            for (k, (c, body)) in arms.iter().enumerate() {
+                let c = self.expr(*c);
+                let kw = if k == 0 { "if" } else { "} else if" };
+                self.line(&format!("{kw} ({c} != 0) {{"));
+                self.depth += 1;
+                self.block(body);
+                self.depth -= 1;
+            }
+            if !rest.is_empty() {
+                self.line("} else {");
+                self.depth += 1;
+                self.block(rest);
+                self.depth -= 1;
+            }
+            self.line("}");
+            return;
+        }
+        if arms.len() > 1 {
+            self.line("do {");
+            self.depth += 1;
+            for (c, body) in &arms {
+                let opened = !pure(p, *c);
+                if opened {
+                    self.line("{");
+                    self.depth += 1;
+                }
+                let c = self.expr(*c);
+                self.line(&format!("if ({c} != 0) {{"));
+                self.depth += 1;
+                self.block(body);
+                self.line("break;");
+                self.depth -= 1;
+                self.line("}");
+                if opened {
+                    self.depth -= 1;
+                    self.line("}");
+                }
+            }
+            self.block(rest);
+            self.depth -= 1;
+            self.line("} while (0);");
+            return;
+        }
+        let opened = !pure(p, cond);
+        if opened {
+            self.line("{");
+            self.depth += 1;
+        }
+        let c = self.expr(cond);
+        self.line(&format!("if ({c} != 0) {{"));
+        self.depth += 1;
+        self.block(then);
+        self.depth -= 1;
+        if otherwise.is_empty() {
+            self.line("}");
+        } else {
+            self.line("} else {");
+            self.depth += 1;
+            self.block(otherwise);
+            self.depth -= 1;
+            self.line("}");
+        }
+        if opened {
+            self.depth -= 1;
+            self.line("}");
         }
     }
 
@@ -357,31 +461,7 @@ impl CEmit<'_> {
                 cond,
                 then,
                 otherwise,
-            } => {
-                let opened = !pure(p, *cond);
-                if opened {
-                    self.line("{");
-                    self.depth += 1;
-                }
-                let c = self.expr(*cond);
-                self.line(&format!("if ({c} != 0) {{"));
-                self.depth += 1;
-                self.block(then);
-                self.depth -= 1;
-                if otherwise.is_empty() {
-                    self.line("}");
-                } else {
-                    self.line("} else {");
-                    self.depth += 1;
-                    self.block(otherwise);
-                    self.depth -= 1;
-                    self.line("}");
-                }
-                if opened {
-                    self.depth -= 1;
-                    self.line("}");
-                }
-            }
+            } => self.if_chain(*cond, then, otherwise),
             Stmt::Switch { slot, cases } => {
                 let sel = (self.slot)(*slot);
                 self.line(&format!("switch ((int64_t){sel}) {{"));

@@ -7,8 +7,13 @@
 //! the `assume`s, runs the translated step and asserts the selected properties. A run-time error
 //! ends the tick without a successor (the state before the tick is restored) unless its
 //! built-in property was selected, in which case it is an assertion failure.
+//!
+//! SPIN's own limits: a step with more jump points than a `d_step` may hold (2048) runs as an
+//! `atomic` sequence instead (slower for SPIN, same verdicts), and a procedure longer than SPIN's inline buffer (64 KiB) is written out at
+//! each call instead of as an `inline`. `else if` chains are written flat (a one-pass `do` left
+//! by `break`), so the text grows linearly with a state's transitions.
 
-use crate::c_expr::{lets_in_stmts, pure};
+use crate::c_expr::{else_if_chain, lets_in_stmts, pure};
 use crate::common::{area, slot_fields, Area, Source};
 use statecheck_ir::{BinOp, UnOp};
 use statecheck_ir::{Node, Program, PropertyKind, SlotId, Stmt};
@@ -57,6 +62,8 @@ pub fn export(p: &Program, src: &Source, opts: &PromelaOptions) -> Result<String
     let selected = |name: &str| opts.properties.iter().any(|n| n == name);
     let mut g = Pml {
         p,
+        expand: vec![false; p.procs.len()],
+        calls: Vec::new(),
         fields: &fields,
         tmp: 0,
         fail_div: selected("no_division_by_zero"),
@@ -92,9 +99,20 @@ pub fn export(p: &Program, src: &Source, opts: &PromelaOptions) -> Result<String
         proc_order(p, k as u32, &mut seen, &mut order);
     }
     let mut procs = String::new();
+    // Jump points each procedure adds where it is expanded (callees included), for SPIN's
+    // limit on one d_step.
+    let mut jumps = vec![0usize; p.procs.len()];
     for k in order {
         g.out.clear();
+        g.calls.clear();
         g.block(&p.procs[k as usize].body, 1);
+        jumps[k as usize] =
+            jump_points(&g.out) + g.calls.iter().map(|c| jumps[*c as usize]).sum::<usize>();
+        if g.out.len() > MAX_INLINE_TEXT {
+            // Too long for SPIN's inline buffer: its body is written at each call instead.
+            g.expand[k as usize] = true;
+            continue;
+        }
         let _ = writeln!(
             procs,
             "/* {} */\ninline p{k}() {{\n    skip;\n{}}}\n",
@@ -102,8 +120,10 @@ pub fn export(p: &Program, src: &Source, opts: &PromelaOptions) -> Result<String
         );
     }
     g.out.clear();
+    g.calls.clear();
     g.block(&p.step, 3);
     let step = std::mem::take(&mut g.out);
+    let step_jumps = jump_points(&step) + g.calls.iter().map(|c| jumps[*c as usize]).sum::<usize>();
     let mut props = String::new();
     let mut any_selected = false;
     for prop in &p.properties {
@@ -163,7 +183,19 @@ pub fn export(p: &Program, src: &Source, opts: &PromelaOptions) -> Result<String
             .collect();
         let _ = writeln!(text, "        if {} fi;", opts.join(" "));
     }
-    text.push_str("        d_step {\n");
+    // SPIN compiles a d_step into one transition with at most 2048 jump sources and
+    // destinations ("d_step sequence too long"); a longer step runs as an atomic sequence,
+    // which has no such limit.
+    let step_jumps = step_jumps + jump_points(&assumes) + jump_points(&props);
+    if step_jumps > MAX_DSTEP_JUMPS {
+        let _ = writeln!(
+            text,
+            "        /* atomic, not d_step: the step has about {step_jumps} jump points, over SPIN's d_step limit */"
+        );
+        text.push_str("        atomic {\n");
+    } else {
+        text.push_str("        d_step {\n");
+    }
     text.push_str(&assumes);
     for (k, f) in fields.iter().enumerate().take(p.n_state) {
         let _ = writeln!(text, "            sv_{k} = {f};");
@@ -191,10 +223,15 @@ fn collect_calls(stmts: &[Stmt], acc: &mut Vec<u32>) {
         match s {
             Stmt::Call(c) => acc.push(*c),
             Stmt::If {
-                then, otherwise, ..
+                cond,
+                then,
+                otherwise,
             } => {
-                collect_calls(then, acc);
-                collect_calls(otherwise, acc);
+                let (arms, rest) = else_if_chain(*cond, then, otherwise);
+                for (_, body) in arms {
+                    collect_calls(body, acc);
+                }
+                collect_calls(rest, acc);
             }
             Stmt::Switch { cases, .. } => cases.iter().for_each(|c| collect_calls(c, acc)),
             _ => {}
@@ -202,8 +239,28 @@ fn collect_calls(stmts: &[Stmt], acc: &mut Vec<u32>) {
     }
 }
 
+/// Longest procedure body written as an `inline` (SPIN's inline text buffer holds 64 KiB).
+const MAX_INLINE_TEXT: usize = 60_000;
+
+/// Most jump points (conservatively counted) of a step still wrapped in a `d_step` (SPIN's
+/// limit is 2048 jump sources and as many destinations).
+const MAX_DSTEP_JUMPS: usize = 1_500;
+
+/// A conservative count of the jump sources and destinations SPIN makes of Promela text:
+/// every option, end of selection or loop, `break` and `goto`.
+fn jump_points(text: &str) -> usize {
+    ["::", "fi;", "od;", "break", "goto", "fi\n"]
+        .iter()
+        .map(|t| text.matches(t).count())
+        .sum()
+}
+
 struct Pml<'a> {
     p: &'a Program,
+    /// Procedures written at their call sites (too long for an `inline`).
+    expand: Vec<bool>,
+    /// Procedures called (not expanded) in the text emitted since the last clear.
+    calls: Vec<u32>,
     fields: &'a [String],
     tmp: usize,
     fail_div: bool,
@@ -407,6 +464,30 @@ impl Pml<'_> {
                     cond,
                     then,
                     otherwise,
+                } if matches!(otherwise.as_slice(), [Stmt::If { .. }]) => {
+                    // An `else if` chain (a state's transitions in priority order), flat: a
+                    // one-pass `do` that each taken arm leaves with `break`, so neither the
+                    // text's nesting nor this emitter's recursion grows with its length.
+                    let (arms, rest) = else_if_chain(*cond, then, otherwise);
+                    self.line(d, "do");
+                    self.line(d, ":: true ->");
+                    for (c, body) in arms {
+                        let c = self.expr(c, d + 1);
+                        self.line(d + 1, &format!("if :: ({c}) != 0 ->"));
+                        self.line(d + 2, "skip;");
+                        self.block(body, d + 2);
+                        self.line(d + 2, "break");
+                        self.line(d + 1, ":: else -> skip");
+                        self.line(d + 1, "fi;");
+                    }
+                    self.block(rest, d + 1);
+                    self.line(d + 1, "break");
+                    self.line(d, "od;");
+                }
+                Stmt::If {
+                    cond,
+                    then,
+                    otherwise,
                 } => {
                     let c = self.expr(*cond, d);
                     self.line(d, &format!("if :: ({c}) != 0 ->"));
@@ -428,7 +509,14 @@ impl Pml<'_> {
                     self.line(d, ":: else -> skip");
                     self.line(d, "fi;");
                 }
-                Stmt::Call(k) => self.line(d, &format!("p{k}();")),
+                Stmt::Call(k) if self.expand[*k as usize] => {
+                    let body = &self.p.procs[*k as usize].body;
+                    self.block(body, d);
+                }
+                Stmt::Call(k) => {
+                    self.calls.push(*k);
+                    self.line(d, &format!("p{k}();"));
+                }
                 Stmt::Cover(_) => {}
             }
         }

@@ -2,7 +2,7 @@
 //! no unsafe), translated statement by statement and node by node from the IR. A run-time
 //! error returns `Err(Error)` with the same site number the interpreter reports.
 
-use crate::c_expr::lets_in_stmts;
+use crate::c_expr::{else_if_chain, lets_in_stmts};
 use crate::common::{area, ident, int_width, slot_fields, Area, Source};
 use statecheck_ir::{BinOp, UnOp};
 use statecheck_ir::{Node, Program, Slot, SlotId, Stmt, ValueKind};
@@ -248,11 +248,17 @@ impl Gen<'_> {
                     then,
                     otherwise,
                 } => {
-                    let _ = writeln!(out, "{ind}if {} != 0 {{", self.expr(*cond));
-                    self.block(then, d + 1, out);
-                    if !otherwise.is_empty() {
+                    // `else if` chains (a state's transitions in priority order) flat, in a
+                    // loop: neither indentation nor recursion grows with their length.
+                    let (arms, rest) = else_if_chain(*cond, then, otherwise);
+                    for (k, (c, body)) in arms.into_iter().enumerate() {
+                        let kw = if k == 0 { "if" } else { "} else if" };
+                        let _ = writeln!(out, "{ind}{kw} {} != 0 {{", self.expr(c));
+                        self.block(body, d + 1, out);
+                    }
+                    if !rest.is_empty() {
                         let _ = writeln!(out, "{ind}}} else {{");
-                        self.block(otherwise, d + 1, out);
+                        self.block(rest, d + 1, out);
                     }
                     let _ = writeln!(out, "{ind}}}");
                 }

@@ -3,11 +3,11 @@
 //! and bucketed by shard. Properties decided by the successor state alone are checked later,
 //! once per new state ([`StateCheck`]).
 
-use crate::inputs::InputSpace;
 use crate::native::NativeRun;
 use crate::pack::{Key, Packer};
 use crate::props::{Check, Spec};
 use crate::table::{shard_of, SHARDS};
+use statecheck_ir::assume::InputSpace;
 use statecheck_ir::{ExprId, Machine, Prepared, Program, RuntimeError};
 
 /// A successor found while expanding: its key and how it was reached.

@@ -21,24 +21,20 @@
 //! exploration by a second search, with parent links, up to the depth of the deepest violation,
 //! within what is left of the time budget.
 
-mod enumerate;
 mod error;
 mod expand;
-mod inputs;
-mod interval;
 pub mod ltl;
 mod native;
 pub mod pack;
 pub mod props;
-mod reads;
 mod search;
 pub mod successors;
 pub mod table;
 mod trace;
 
 pub use error::{Error, ErrorKind};
-pub use inputs::InputSpace;
 pub use props::{PropKind, BUILTINS};
+pub use statecheck_ir::assume::InputSpace;
 pub use statecheck_ir::verdict::{PropResult, Verdict};
 pub use successors::{CompiledSuccessors, SuccessorCompiler};
 

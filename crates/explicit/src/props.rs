@@ -79,17 +79,17 @@ pub(crate) fn mark_per_state(
     specs: &mut [Spec],
     mut init_decides: impl FnMut(Check) -> bool,
 ) {
-    let state = crate::reads::state_slots(program);
-    let state_and_inputs = state.start..crate::reads::input_slots(program).end;
+    let state = statecheck_ir::assume::reads::state_slots(program);
+    let state_and_inputs = state.start..statecheck_ir::assume::reads::input_slots(program).end;
     for s in specs {
         let exprs = s.check.exprs();
-        s.after_tick = exprs
-            .iter()
-            .all(|&e| crate::reads::reads_only(program, e, state_and_inputs.clone()));
+        s.after_tick = exprs.iter().all(|&e| {
+            statecheck_ir::assume::reads::reads_only(program, e, state_and_inputs.clone())
+        });
         s.per_state = !exprs.is_empty()
             && exprs
                 .iter()
-                .all(|&e| crate::reads::reads_only(program, e, state.clone()))
+                .all(|&e| statecheck_ir::assume::reads::reads_only(program, e, state.clone()))
             && !init_decides(s.check);
     }
 }

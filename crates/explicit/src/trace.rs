@@ -94,8 +94,8 @@ pub(crate) fn rebuild<K: Key>(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::inputs::InputSpace;
     use crate::pack::Packer;
+    use statecheck_ir::assume::InputSpace;
 
     /// A counter that one event increments; the invariant fails when it reaches 5.
     fn program() -> statecheck_ir::Program {

@@ -8,6 +8,7 @@
 //! checkers and the code generators only execute or translate the program. [`Machine`] is the
 //! reference interpreter.
 
+pub mod assume;
 mod error;
 mod interp;
 mod layout;

@@ -92,3 +92,31 @@ fn junctions_reached_by_many_paths_do_not_expand_exponentially() {
     );
     assert_eq!(errs.len(), 1);
 }
+
+#[test]
+fn very_long_unknown_identifier_gets_no_suggestion() {
+    // A 100,000-character unknown name once spent 36 s in the "did you mean" search. Names
+    // longer than MAX_SUGGEST_LEN (128) are not compared: one E0101 error without a hint.
+    let name = "a".repeat(100_000);
+    let src = format!(
+        "chart M {{ output aa: int[0..1] = 0; initial S; state S {{ during {{ aa = {name}; }} }} }}\n"
+    );
+    let (file, parse) = statecheck_syntax::parse(&src);
+    assert!(parse.is_empty());
+    let (_, diags) = statecheck_model::check(&file);
+    let errs: Vec<&Diagnostic> = diags.iter().filter(|d| d.is_error()).collect();
+    assert_eq!(errs.len(), 1, "{errs:#?}");
+    assert_eq!(errs[0].code, "E0101");
+    assert!(errs[0]
+        .hint
+        .as_deref()
+        .is_none_or(|h| !h.contains("did you mean")));
+    // A short typo still gets its suggestion.
+    let src =
+        "chart M { output level: int[0..1] = 0; initial S; state S { during { levle = 1; } } }\n";
+    let (file, _) = statecheck_syntax::parse(src);
+    let (_, diags) = statecheck_model::check(&file);
+    assert!(diags
+        .iter()
+        .any(|d| d.hint.as_deref().is_some_and(|h| h.contains("`level`"))));
+}

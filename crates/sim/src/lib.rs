@@ -10,6 +10,7 @@ pub mod run;
 pub mod scenario;
 
 pub use run::{
-    run, tick_once, unreached, InputSource, Options, Run, ScenarioInputs, Stop, TickRecord,
+    run, run_streaming, tick_once, unreached, InputSource, NoInput, Options, Run, ScenarioInputs,
+    Sink, Stop, TickRecord,
 };
-pub use scenario::{Scenario, ScenarioError};
+pub use scenario::{Scenario, ScenarioError, ScenarioWriter};

@@ -55,6 +55,34 @@ pub struct Run {
     pub coverage: Option<Vec<u64>>,
     /// The inputs applied, one full vector per tick (for `--save-scenario`).
     pub inputs: Vec<Vec<i64>>,
+    /// When the run ended with [`Stop::AssumeViolated`] because the input source found no
+    /// inputs: why (a random source's deadlock, or draws exhausted).
+    pub no_input: Option<NoInput>,
+}
+
+/// Why an input source gave no inputs for a tick.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum NoInput {
+    /// No input vector satisfies the `assume`s in the current state (a state-only `assume`
+    /// fails, or every candidate was tried): a deadlock of the closed system.
+    Deadlock {
+        /// Index into `Program::assumes` of one that blocks.
+        assume: usize,
+    },
+    /// No vector that satisfies them was found within the draws allowed; there may be one.
+    NotFound {
+        /// Index into `Program::assumes` of one that the last draw violated.
+        assume: usize,
+    },
+}
+
+impl NoInput {
+    /// The `assume` named.
+    pub fn assume(self) -> usize {
+        match self {
+            NoInput::Deadlock { assume } | NoInput::NotFound { assume } => assume,
+        }
+    }
 }
 
 /// Options of a run.
@@ -69,8 +97,9 @@ pub struct Options {
 /// Where a run gets its inputs from.
 pub trait InputSource {
     /// Fill `inputs` (in `Program::inputs` order) for `tick`; the machine holds the state
-    /// before the tick. Return false when the run is over.
-    fn next(&mut self, tick: u64, machine: &Machine, inputs: &mut [i64]) -> Result<bool, usize>;
+    /// before the tick. Return false when the run is over, an error when no inputs satisfy
+    /// the `assume`s.
+    fn next(&mut self, tick: u64, machine: &Machine, inputs: &mut [i64]) -> Result<bool, NoInput>;
 }
 
 /// Inputs from a scenario: held inputs keep their value, events last one tick.
@@ -86,7 +115,7 @@ impl<'s> ScenarioInputs<'s> {
 }
 
 impl InputSource for ScenarioInputs<'_> {
-    fn next(&mut self, tick: u64, machine: &Machine, inputs: &mut [i64]) -> Result<bool, usize> {
+    fn next(&mut self, tick: u64, machine: &Machine, inputs: &mut [i64]) -> Result<bool, NoInput> {
         let Some(changes) = self.scenario.ticks.get(tick as usize) else {
             return Ok(false);
         };
@@ -103,8 +132,64 @@ impl InputSource for ScenarioInputs<'_> {
     }
 }
 
-/// Run `program` from its initial state with inputs from `source`.
+/// Receives a run tick by tick, as it is computed (see [`run_streaming`]).
+pub trait Sink {
+    /// The inputs of `tick` (in `Program::inputs` order), once they satisfy the `assume`s and
+    /// before the step: every tick that is attempted, including one that fails.
+    fn inputs(&mut self, tick: u64, inputs: &[i64]) {
+        let _ = (tick, inputs);
+    }
+    /// Every slot after `tick`: every tick that completed, including one that violates a
+    /// property, but not one that ended in a run-time error.
+    fn tick(&mut self, tick: u64, slots: &[i64]) {
+        let _ = (tick, slots);
+    }
+}
+
+/// The sink of [`run`]: the trace and the inputs kept in memory.
+struct Collect<'a> {
+    trace: Option<&'a mut Vec<TickRecord>>,
+    inputs: &'a mut Vec<Vec<i64>>,
+}
+
+impl Sink for Collect<'_> {
+    fn inputs(&mut self, _tick: u64, inputs: &[i64]) {
+        self.inputs.push(inputs.to_vec());
+    }
+    fn tick(&mut self, tick: u64, slots: &[i64]) {
+        if let Some(t) = &mut self.trace {
+            t.push(TickRecord {
+                tick,
+                slots: slots.to_vec(),
+            });
+        }
+    }
+}
+
+/// Run `program` from its initial state with inputs from `source`, keeping the trace (unless
+/// [`Options::no_trace`]) and the inputs in the [`Run`].
 pub fn run(program: &Program, source: &mut dyn InputSource, opts: Options) -> Run {
+    let mut trace = Vec::new();
+    let mut inputs = Vec::new();
+    let mut sink = Collect {
+        trace: (!opts.no_trace).then_some(&mut trace),
+        inputs: &mut inputs,
+    };
+    let mut r = run_streaming(program, source, opts, &mut sink);
+    r.trace = trace;
+    r.inputs = inputs;
+    r
+}
+
+/// Run `program` from its initial state with inputs from `source`, handing each tick to
+/// `sink` as it is computed and keeping nothing per tick: the [`Run`]'s trace and inputs are
+/// empty, and memory does not grow with the number of ticks.
+pub fn run_streaming(
+    program: &Program,
+    source: &mut dyn InputSource,
+    opts: Options,
+    sink: &mut dyn Sink,
+) -> Run {
     let mut m = Machine::new(program);
     if opts.coverage {
         m.enable_coverage();
@@ -114,26 +199,27 @@ pub fn run(program: &Program, source: &mut dyn InputSource, opts: Options) -> Ru
         .iter()
         .map(|i| program.slots[i.slot as usize].init)
         .collect();
-    let mut trace = Vec::new();
-    let mut all_inputs = Vec::new();
     let mut reached = unreached(program);
+    let mut no_input = None;
     let mut tick = 0u64;
     let stop = loop {
         match source.next(tick, &m, &mut inputs) {
             Ok(true) => {}
             Ok(false) => break Stop::Completed,
-            Err(assume) => break Stop::AssumeViolated { tick, assume },
+            Err(why) => {
+                no_input = Some(why);
+                break Stop::AssumeViolated {
+                    tick,
+                    assume: why.assume(),
+                };
+            }
         }
         let result = tick_once(program, &mut m, tick, &inputs, &mut reached, &mut || {
-            all_inputs.push(inputs.clone());
+            sink.inputs(tick, &inputs);
         });
         // The violating tick is part of the trace; a failed or refused one is not.
-        let recorded = matches!(result, Ok(()) | Err(Stop::Violation { .. }));
-        if recorded && !opts.no_trace {
-            trace.push(TickRecord {
-                tick,
-                slots: m.slots().to_vec(),
-            });
+        if matches!(result, Ok(()) | Err(Stop::Violation { .. })) {
+            sink.tick(tick, m.slots());
         }
         if let Err(stop) = result {
             break stop;
@@ -141,11 +227,12 @@ pub fn run(program: &Program, source: &mut dyn InputSource, opts: Options) -> Ru
         tick += 1;
     };
     Run {
-        trace,
+        trace: Vec::new(),
         stop,
         reached,
         coverage: m.coverage().map(<[u64]>::to_vec),
-        inputs: all_inputs,
+        inputs: Vec::new(),
+        no_input,
     }
 }
 

@@ -231,7 +231,7 @@ pub fn parse(text: &str, program: &Program) -> Result<Scenario, Vec<ScenarioErro
     if errors.is_empty() {
         if loop_start.is_some_and(|k| k == 0 || k >= ticks.len()) {
             return Err(vec![ScenarioError {
-                code: "E0811",
+                code: "E0810",
                 line: 1,
                 col: 1,
                 len: 1,
@@ -332,62 +332,131 @@ fn edit_distance(a: &str, b: &str) -> usize {
     }
     prev[b.len()]
 }
+/// The header line of a scenario file.
+const HEADER: &str =
+    "# statecheck scenario: one line per tick; `name = value` holds, bare names are events\n";
 
 /// Write a scenario in the canonical format: qualified names, held inputs written only when
 /// they change, identical consecutive lines folded into `* N`.
 pub fn format(s: &Scenario, program: &Program) -> String {
-    let mut out = String::from(
-        "# statecheck scenario: one line per tick; `name = value` holds, bare names are events\n",
-    );
-    let mut lines: Vec<String> = Vec::with_capacity(s.ticks.len());
-    for tick in &s.ticks {
+    let mut w = ScenarioWriter::new(program);
+    let mut out = w.header().to_string();
+    for (i, tick) in s.ticks.iter().enumerate() {
+        if s.loop_start == Some(i) {
+            out.push_str(&w.mark_loop());
+        }
+        out.push_str(&w.push_changes(tick));
+    }
+    out.push_str(&w.finish());
+    out
+}
+
+/// A scenario written tick by tick, in the canonical format of [`format`], holding only the
+/// pending line (for folding repeats) and the held inputs: constant memory for any length.
+pub struct ScenarioWriter<'p> {
+    program: &'p Program,
+    held: Vec<i64>,
+    /// The last line, not yet written, how many ticks it stands for, and whether repeats
+    /// of it fold.
+    pending: Option<(String, u64, bool)>,
+}
+
+impl<'p> ScenarioWriter<'p> {
+    /// A writer for scenarios of `program`.
+    pub fn new(program: &'p Program) -> Self {
+        ScenarioWriter {
+            program,
+            held: program
+                .inputs
+                .iter()
+                .map(|i| program.slots[i.slot as usize].init)
+                .collect(),
+            pending: None,
+        }
+    }
+
+    /// The file's header line.
+    pub fn header(&self) -> &'static str {
+        HEADER
+    }
+
+    /// The next tick, as a full input vector (in `Program::inputs` order); returns the text
+    /// that is complete (possibly empty).
+    pub fn push_vector(&mut self, vector: &[i64]) -> String {
+        let changes = changes(self.program, &mut self.held, vector);
+        self.push_changes(&changes)
+    }
+
+    /// The next tick, as its changes (input index, value).
+    pub fn push_changes(&mut self, tick: &[(usize, i64)]) -> String {
+        let p = self.program;
         let items: Vec<String> = tick
             .iter()
             .map(|(i, v)| {
-                let inp = &program.inputs[*i];
+                let inp = &p.inputs[*i];
                 if inp.is_event {
                     inp.name.clone()
                 } else {
                     format!(
                         "{} = {}",
                         inp.name,
-                        program.slots[inp.slot as usize].display.format(*v)
+                        p.slots[inp.slot as usize].display.format(*v)
                     )
                 }
             })
             .collect();
-        lines.push(if items.is_empty() {
-            "-".into()
+        let line = if items.is_empty() {
+            "-".to_string()
         } else {
             items.join(", ")
-        });
-    }
-    let mut i = 0;
-    while i < lines.len() {
-        if s.loop_start == Some(i) {
-            out.push_str("loop:\n");
-        }
-        let mut j = i + 1;
-        // A fold never crosses the loop's start.
-        let stop = match s.loop_start {
-            Some(k) if k > i => k,
-            _ => lines.len(),
         };
-        // Only fold lines that are pure repeats: event lines, or `-`.
-        let foldable =
-            lines[i] == "-" || s.ticks[i].iter().all(|(k, _)| program.inputs[*k].is_event);
-        while foldable && j < stop && lines[j] == lines[i] {
-            j += 1;
+        // Only lines that are pure repeats fold: event lines, or `-`.
+        let foldable = tick.iter().all(|(k, _)| p.inputs[*k].is_event);
+        if let Some((last, n, true)) = &mut self.pending {
+            if *last == line {
+                *n += 1;
+                return String::new();
+            }
         }
-        if j - i > 1 {
-            out.push_str(&format!("{} * {}\n", lines[i], j - i));
-        } else {
-            out.push_str(&lines[i]);
-            out.push('\n');
-        }
-        i = j;
+        let done = self.finish();
+        self.pending = Some((line, 1, foldable));
+        done
     }
-    out
+
+    /// Mark the start of a lasso's loop before the next tick: the pending line is written
+    /// (a fold never crosses the loop's start), then `loop:`.
+    pub fn mark_loop(&mut self) -> String {
+        let mut done = self.finish();
+        done.push_str("loop:\n");
+        done
+    }
+
+    /// The text of the pending line (call once after the last tick).
+    pub fn finish(&mut self) -> String {
+        match self.pending.take() {
+            Some((line, n, _)) if n > 1 => format!("{line} * {n}\n"),
+            Some((line, _, _)) => format!("{line}\n"),
+            None => String::new(),
+        }
+    }
+}
+
+/// The changes of one full input vector against the held values (updated): the present
+/// events and the held inputs whose value changed.
+fn changes(program: &Program, held: &mut [i64], vector: &[i64]) -> Vec<(usize, i64)> {
+    let mut changes = Vec::new();
+    for (k, inp) in program.inputs.iter().enumerate() {
+        let v = vector[k];
+        if inp.is_event {
+            if v != 0 {
+                changes.push((k, 1));
+            }
+        } else if v != held[k] {
+            held[k] = v;
+            changes.push((k, v));
+        }
+    }
+    changes
 }
 
 /// Build a scenario from full input vectors (one per tick, in `Program::inputs` order),
@@ -400,21 +469,7 @@ pub fn from_input_vectors(program: &Program, vectors: &[Vec<i64>]) -> Scenario {
         .collect();
     let ticks = vectors
         .iter()
-        .map(|vec| {
-            let mut changes = Vec::new();
-            for (k, inp) in program.inputs.iter().enumerate() {
-                let v = vec[k];
-                if inp.is_event {
-                    if v != 0 {
-                        changes.push((k, 1));
-                    }
-                } else if v != held[k] {
-                    held[k] = v;
-                    changes.push((k, v));
-                }
-            }
-            changes
-        })
+        .map(|vec| changes(program, &mut held, vec))
         .collect();
     Scenario {
         ticks,

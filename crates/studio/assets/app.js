@@ -33,6 +33,12 @@ function receive(m) {
   } else if (m.type === 'state') {
     applyState(m);
     if (m.note) toast(m.note, true);
+  } else if (m.type === 'verdict') {
+    showVerdict(m);
+  } else if (m.type === 'verify_done') {
+    for (const r of m.results || []) showVerdict(r);
+    $('#vstate').textContent = m.error ? `error: ${m.error}` : `done in ${(m.time_s || 0).toFixed(1)} s`;
+    $('#verify').disabled = false;
   } else if (m.type === 'scenario') {
     studio.lastScenario = m.text;
   } else if (m.type === 'error') {
@@ -343,6 +349,38 @@ function renderMessages() {
   for (const d of box.querySelectorAll('.msg[data-t]')) d.onclick = () => { setCursor(+d.dataset.t); };
 }
 
+// ---------------------------------------------------------------- verify from the page
+studio.verdicts = {};
+function showVerdict(v) {
+  studio.verdicts[v.name] = v;
+  const list = $('#rlist');
+  let row = list.querySelector(`.res[data-name="${CSS.escape(v.name)}"]`);
+  if (!row) {
+    row = document.createElement('div');
+    row.dataset.name = v.name;
+    list.appendChild(row);
+  }
+  row.className = 'res' + (v.scenario ? ' replay' : '');
+  const what = v.scenario ? `${v.verdict === 'reachable' ? 'witness' : 'counterexample'}: ${v.depth} ticks — click to replay` : (v.reason || v.note || '');
+  row.innerHTML = `<span>${escapeHtml(v.name)}</span><span class="v ${v.verdict}">${v.verdict}</span>` +
+    `<span class="sub">${escapeHtml(v.kind)} · ${escapeHtml(v.engine || '')}${what ? ' · ' + escapeHtml(what) : ''}</span>`;
+  row.onclick = v.scenario ? () => {
+    setRunning(false);
+    studio.lastLoaded = `${v.name} (${v.verdict})`;
+    send({op: 'load_scenario', text: v.scenario});
+  } : null;
+}
+
+async function verifyAll() {
+  $('#results').hidden = false;
+  $('#rlist').innerHTML = '';
+  studio.verdicts = {};
+  $('#vstate').textContent = 'running…';
+  $('#verify').disabled = true;
+  const r = await send({op: 'verify', engine: $('#engine').value, timeout_s: 60});
+  if (r.type === 'error') { $('#verify').disabled = false; $('#vstate').textContent = r.message; }
+}
+
 function setCursor(t) {
   studio.cursor = Math.max(0, Math.min(studio.records.length - 1, t));
   render();
@@ -437,6 +475,7 @@ function wire() {
   $('#forward').onclick = () => send({op: 'forward', n: 1});
   $('#reset').onclick = () => { setRunning(false); studio.lastLoaded = null; send({op: 'reset'}); };
   $('#cov').onchange = render;
+  $('#verify').onclick = verifyAll;
   $('#zoom').onchange = zoom;
   $('#save').onclick = async () => {
     const r = await send({op: 'save'});

@@ -186,6 +186,33 @@ async function counterexample(browser) {
   await page.close();
 }
 
+// Verify from the page (the verify library, verdicts streamed as decided), then replay a
+// result. The model, by hand: tick 0 enters A, each later tick with `go` adds 1 to n, so the
+// shortest run to n = 3 has 4 ticks and violates `small` at tick 3.
+async function verifyInPage(browser) {
+  const model = path.join(TMP, 'count.sc');
+  fs.writeFileSync(model, 'chart Count {\n  input go: bool = false;\n  output n: int[0..9] = 0;\n  initial A;\n' +
+    '  state A { during { if go { n = min(9, n + 1); } } on [n == 9] -> B; }\n  state B { }\n  invariant small: n < 3;\n  reachable full: in(B);\n}\n');
+  const url = await serve(model);
+  const page = await browser.newPage({viewport: {width: 1500, height: 900}, acceptDownloads: true});
+  await open(page, url);
+  await page.selectOption('#engine', 'explicit');
+  await page.click('#verify');
+  await page.waitForFunction(() => /done/.test(document.querySelector('#vstate').textContent), null, {timeout: 120000});
+  const v = await page.evaluate(() => window.studio.verdicts);
+  assert.strictEqual(v.small.verdict, 'violated');
+  assert.strictEqual(v.small.depth, 4);
+  // `full`: n = 9 after tick 9, B entered in tick 10: a witness of 11 ticks.
+  assert.strictEqual(v.full.verdict, 'reachable');
+  assert.strictEqual(v.full.depth, 11);
+  await page.click('#rlist .res[data-name="small"]');
+  await page.waitForFunction(() => window.studio.run.stop && window.studio.run.ticks === 4);
+  assert.strictEqual(await page.evaluate(() => window.studio.run.stop.tick), 3);
+  await page.check('#cov');
+  await page.screenshot({path: path.join(SHOTS, 'verify.png')});
+  await page.close();
+}
+
 async function fam5(browser) {
   const model = 'examples/fam/fam_system5.sc';
   const url = await serve(model);
@@ -225,7 +252,7 @@ async function linearDrive(browser) {
   fs.mkdirSync(SHOTS, {recursive: true});
   const browser = await chromium.launch({executablePath: CHROMIUM, args: ['--no-sandbox', '--disable-gpu']});
   let failed = false;
-  for (const [name, t] of [['fam closed loop', famClosedLoop], ['counterexample', counterexample], ['fam_system5', fam5], ['linear drive', linearDrive]]) {
+  for (const [name, t] of [['fam closed loop', famClosedLoop], ['counterexample', counterexample], ['verify in the page', verifyInPage], ['fam_system5', fam5], ['linear drive', linearDrive]]) {
     try { await t(browser); console.log(`ok   ${name}`); } catch (e) { failed = true; console.log(`FAIL ${name}: ${e.stack || e}`); }
   }
   await browser.close();

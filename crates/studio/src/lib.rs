@@ -14,6 +14,7 @@ pub mod load;
 pub mod protocol;
 pub mod server;
 pub mod session;
+pub mod verify;
 pub mod views;
 
 pub use server::{spawn, Config, Error, ErrorKind, Handle};

@@ -76,6 +76,16 @@ pub enum Request {
         /// The scenario.
         text: String,
     },
+    /// Decide the properties (the `statecheck verify` portfolio); verdicts arrive as
+    /// `verdict` messages as they are decided, then `verify_done`.
+    Verify {
+        /// Echoed in the reply.
+        id: Option<u64>,
+        /// `auto` (default), `explicit`, `bmc`, `kind` or `ic3`.
+        engine: Option<String>,
+        /// Seconds (30 if absent, at most 300).
+        timeout_s: Option<u64>,
+    },
     /// The inputs so far as a scenario.
     Save {
         /// Echoed in the reply.

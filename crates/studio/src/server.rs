@@ -204,12 +204,25 @@ async fn session(app: Arc<App>, mut socket: WebSocket) {
     if let Some(s) = &sess {
         ok = ok && send(&mut socket, protocol::state(s, None, Some(0), &[])).await;
     }
+    let (vtx, mut vrx) = tokio::sync::mpsc::unbounded_channel::<Value>();
+    let verifying = Arc::new(std::sync::atomic::AtomicBool::new(false));
     while ok {
         tokio::select! {
+            Some(v) = vrx.recv() => {
+                if v["type"] == "verify_done" {
+                    verifying.store(false, Ordering::Relaxed);
+                }
+                ok = send(&mut socket, v).await;
+            }
             msg = socket.recv() => {
                 let reply = match msg {
                     None | Some(Err(_)) | Some(Ok(Message::Close(_))) => break,
-                    Some(Ok(Message::Text(t))) => handle(&mut sess, t.as_str()),
+                    Some(Ok(Message::Text(t))) => match protocol::parse(t.as_str()) {
+                        Ok(Request::Verify { id, engine, timeout_s }) => {
+                            start_verify(&sess, &verifying, &vtx, id, engine.as_deref(), timeout_s)
+                        }
+                        _ => handle(&mut sess, t.as_str()),
+                    },
                     Some(Ok(Message::Binary(b))) => protocol::error(None, "malformed", &format!("binary message of {} bytes; requests are JSON text", b.len())),
                     Some(Ok(_)) => continue,
                 };
@@ -227,6 +240,45 @@ async fn session(app: Arc<App>, mut socket: WebSocket) {
         }
     }
     app.live.fetch_sub(1, Ordering::Relaxed);
+}
+
+/// Start a verification of the session's model on a blocking thread, its messages sent
+/// through `tx`; one at a time per session.
+fn start_verify(
+    sess: &Option<Session>,
+    verifying: &Arc<std::sync::atomic::AtomicBool>,
+    tx: &tokio::sync::mpsc::UnboundedSender<Value>,
+    id: Option<u64>,
+    engine: Option<&str>,
+    timeout_s: Option<u64>,
+) -> Value {
+    let Some(s) = sess else {
+        return protocol::error(
+            id,
+            "no_model",
+            "the model does not check; fix it and save the file",
+        );
+    };
+    let engine = match crate::verify::engine(engine) {
+        Ok(e) => e,
+        Err(m) => return protocol::error(id, "bad_input", &m),
+    };
+    if verifying.swap(true, Ordering::Relaxed) {
+        return protocol::error(
+            id,
+            "busy",
+            "a verification is already running in this session",
+        );
+    }
+    let loaded = Arc::clone(s.loaded());
+    let tx = tx.clone();
+    let timeout = timeout_s.unwrap_or(crate::verify::DEFAULT_TIMEOUT_S);
+    tokio::task::spawn_blocking(move || {
+        crate::verify::run(loaded, engine, timeout, &|v| {
+            let _ = tx.send(v);
+        });
+    });
+    json!({"type": "verify_started", "id": id, "engine": engine.as_str(), "timeout_s": timeout.min(crate::verify::MAX_TIMEOUT_S)})
 }
 
 async fn send(socket: &mut WebSocket, v: Value) -> bool {
@@ -313,6 +365,12 @@ pub fn handle(sess: &mut Option<Session>, text: &str) -> Value {
             Err(e) => fail(id, e),
         },
         Request::Save { id } => json!({"type": "scenario", "id": id, "text": s.scenario_text()}),
+        // Started by the session loop (it streams); here only when no loop runs it.
+        Request::Verify { id, .. } => protocol::error(
+            id,
+            "unsupported",
+            "verification runs only over a WebSocket session",
+        ),
     }
 }
 

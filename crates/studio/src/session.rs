@@ -80,7 +80,9 @@ pub struct Session {
     future: Vec<Vec<i64>>,
     snapshots: Vec<Snapshot>,
     stop: Option<Stop>,
-    random: Option<(u64, RandomInputs)>,
+    /// The seed of the random stream and how many random batches it has given (each batch
+    /// draws from its own generator, seeded from both, so a session is reproducible).
+    random: Option<(u64, u64)>,
     last_assume: usize,
     note: Option<String>,
 }
@@ -199,25 +201,31 @@ impl Session {
     /// than the last one starts a new stream. The held inputs follow the last random values.
     pub fn step_random(&mut self, n: u64, seed: u64) -> Result<Vec<TickOut>, Error> {
         self.check_can_step()?;
-        if self.random.as_ref().is_none_or(|(s, _)| *s != seed) {
-            self.random = Some((seed, RandomInputs::new(seed, u64::MAX)));
-        }
+        let batch = match self.random {
+            Some((s, b)) if s == seed => b + 1,
+            _ => 0,
+        };
+        self.random = Some((seed, batch));
         let mut out = Vec::new();
         let loaded = Arc::clone(&self.program);
         let p = &loaded.program;
+        // The simulator's generator (it honours the `assume`s as `sim --random` does); it
+        // borrows the program, so each batch makes its own, from the seed and the batch number.
+        let mut gen = RandomInputs::new(
+            p,
+            seed.wrapping_add(batch.wrapping_mul(0x9E37_79B9_7F4A_7C15)),
+            u64::MAX,
+        );
         for _ in 0..n.min(MAX_BATCH) {
             let mut inputs = self.held.clone();
             let mut m = Machine::new(p);
             m.load_state(&self.state);
             let tick = self.ticks();
-            let Some((_, gen)) = self.random.as_mut() else {
-                break;
-            };
             use statecheck_sim::InputSource;
             if let Err(a) = gen.next(tick, &m, &mut inputs) {
                 let message = format!(
                     "no random inputs satisfying `assume` #{} of the system were found for tick {tick} ({} draws); {} random ticks ran",
-                    a + 1,
+                    a.assume() + 1,
                     statecheck_sim::random::MAX_TRIES,
                     out.len()
                 );

@@ -1,8 +1,20 @@
-//! Write the generated benchmark models into `examples/synthesis/`.
+//! Write the generated benchmark models into `examples/synthesis/`, or one instance:
+//! `gen_families [DIR]` or `gen_families philosophers|line N OUT.sc`.
 use statecheck_synth::families;
 fn main() -> std::io::Result<()> {
-    let dir = std::env::args()
-        .nth(1)
+    let args: Vec<String> = std::env::args().skip(1).collect();
+    if let [family, n, out] = args.as_slice() {
+        let n: usize = n.parse().map_err(std::io::Error::other)?;
+        let text = match family.as_str() {
+            "philosophers" if n >= 2 => families::philosophers(n),
+            "line" if n >= 2 => families::line(n),
+            _ => return Err(std::io::Error::other("philosophers|line N (N >= 2) OUT")),
+        };
+        return std::fs::write(out, text);
+    }
+    let dir = args
+        .first()
+        .cloned()
         .unwrap_or_else(|| "examples/synthesis".into());
     std::fs::write(
         format!("{dir}/philosophers_5.sc"),

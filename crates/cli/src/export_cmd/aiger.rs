@@ -2,7 +2,7 @@
 //! invariant constraint, symbol table), for ABC and other hardware model checkers.
 
 use crate::load;
-use anyhow::{bail, Context, Result};
+use anyhow::{bail, Result};
 use clap::Args;
 
 /// Arguments of `statecheck export aiger`.
@@ -57,7 +57,7 @@ pub fn run(a: AigerArgs) -> Result<u8> {
     } else {
         statecheck_symbolic::aiger::ascii(&aig, &comment)
     };
-    std::fs::write(&a.output, bytes).with_context(|| format!("cannot write `{}`", a.output))?;
+    crate::outpath::write(std::path::Path::new(&a.output), &bytes)?;
     eprintln!(
         "wrote {}: {} inputs, {} latches, {} AND gates, 1 bad output, {} constraint(s)",
         a.output,

@@ -1,7 +1,7 @@
 //! `statecheck export promela`: the closed system as a Promela model for SPIN.
 
 use crate::load;
-use anyhow::{Context, Result};
+use anyhow::Result;
 use clap::Args;
 use statecheck_codegen::promela::{export, PromelaOptions};
 use statecheck_codegen::Source;
@@ -34,7 +34,7 @@ pub fn run(a: PromelaArgs) -> Result<u8> {
     };
     let text = export(&program, &src, &opts)?;
     match &a.output {
-        Some(f) => std::fs::write(f, text).with_context(|| format!("cannot write `{f}`"))?,
+        Some(f) => crate::outpath::write(std::path::Path::new(f), text.as_bytes())?,
         None => print!("{text}"),
     }
     Ok(0)

@@ -2,7 +2,6 @@
 
 use statecheck_ir::view::TraceView as Views;
 use statecheck_ir::Program;
-use statecheck_sim::TickRecord;
 
 fn quote(s: &str) -> String {
     if s.contains([',', '"', '\n']) {
@@ -12,8 +11,8 @@ fn quote(s: &str) -> String {
     }
 }
 
-/// Render a trace as CSV with a header row.
-pub fn render(p: &Program, views: &Views, trace: &[TickRecord]) -> String {
+/// The header row.
+pub fn header(views: &Views) -> String {
     let mut header = vec!["tick".to_string()];
     header.extend(views.instances.iter().map(|i| format!("{}.active", i.name)));
     header.extend(views.vars.iter().map(|v| v.name.clone()));
@@ -24,20 +23,21 @@ pub fn render(p: &Program, views: &Views, trace: &[TickRecord]) -> String {
         .collect::<Vec<_>>()
         .join(",");
     out.push('\n');
-    for rec in trace {
-        let mut row = vec![rec.tick.to_string()];
-        row.extend(
-            (0..views.instances.len()).map(|i| views.active(p, i, &rec.slots, true).join("|")),
-        );
-        row.extend(
-            views
-                .vars
-                .iter()
-                .map(|v| v.display.format(rec.slots[v.slot as usize])),
-        );
-        row.push(views.present_events(&rec.slots).join("|"));
-        out.push_str(&row.iter().map(|c| quote(c)).collect::<Vec<_>>().join(","));
-        out.push('\n');
-    }
+    out
+}
+
+/// The row of one tick.
+pub fn row(p: &Program, views: &Views, tick: u64, slots: &[i64]) -> String {
+    let mut row = vec![tick.to_string()];
+    row.extend((0..views.instances.len()).map(|i| views.active(p, i, slots, true).join("|")));
+    row.extend(
+        views
+            .vars
+            .iter()
+            .map(|v| v.display.format(slots[v.slot as usize])),
+    );
+    row.push(views.present_events(slots).join("|"));
+    let mut out = row.iter().map(|c| quote(c)).collect::<Vec<_>>().join(",");
+    out.push('\n');
     out
 }

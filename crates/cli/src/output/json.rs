@@ -3,7 +3,6 @@
 use serde_json::{json, Map, Value};
 use statecheck_ir::view::TraceView as Views;
 use statecheck_ir::{Program, ValueKind};
-use statecheck_sim::TickRecord;
 
 /// A value as JSON: booleans as `true`/`false`, enums as their literal, integers as numbers.
 pub fn value(kind: &ValueKind, v: i64) -> Value {
@@ -14,21 +13,15 @@ pub fn value(kind: &ValueKind, v: i64) -> Value {
     }
 }
 
-/// One tick as a JSON object.
-pub fn tick(p: &Program, views: &Views, rec: &TickRecord) -> Value {
+/// One tick, given by its number and slots, as a JSON object.
+pub fn tick_of(p: &Program, views: &Views, tick: u64, slots: &[i64]) -> Value {
     let mut active = Map::new();
     for (i, inst) in views.instances.iter().enumerate() {
-        active.insert(
-            inst.name.clone(),
-            json!(views.active(p, i, &rec.slots, false)),
-        );
+        active.insert(inst.name.clone(), json!(views.active(p, i, slots, false)));
     }
     let mut vars = Map::new();
     for v in &views.vars {
-        vars.insert(
-            v.name.clone(),
-            value(&v.display, rec.slots[v.slot as usize]),
-        );
+        vars.insert(v.name.clone(), value(&v.display, slots[v.slot as usize]));
     }
-    json!({"tick": rec.tick, "active": active, "vars": vars, "events": views.present_events(&rec.slots)})
+    json!({"tick": tick, "active": active, "vars": vars, "events": views.present_events(slots)})
 }

@@ -31,116 +31,142 @@ fn vcd_name(s: &str) -> String {
 
 /// Render a trace as VCD; one tick lasts `tick_ms` milliseconds (1 if the model declares none).
 pub fn render(p: &Program, views: &Views, trace: &[TickRecord], tick_ms: i64) -> String {
-    enum Sig {
-        Var {
-            slot: u32,
-            width: u32,
-            is_bool: bool,
-        },
-        Event(u32),
-        State(u32),
+    let (mut s, mut out) = Stream::new(p, views, tick_ms);
+    for rec in trace {
+        out.push_str(&s.tick(rec.tick, &rec.slots));
     }
-    let mut sigs: Vec<(String, Sig)> = Vec::new();
-    let mut out = String::new();
-    let _ = writeln!(
-        out,
-        "$date statecheck trace $end\n$version statecheck {} $end\n$timescale 1ms $end",
-        env!("CARGO_PKG_VERSION")
-    );
-    for (i, inst) in views.instances.iter().enumerate() {
-        let inst = &inst.name;
-        let _ = writeln!(out, "$scope module {} $end", vcd_name(inst));
-        let prefix = format!("{inst}.");
-        for v in views.vars.iter().filter(|v| v.name.starts_with(&prefix)) {
-            let id = ident(sigs.len());
-            let local = vcd_name(&v.name[prefix.len()..]);
-            if v.is_bool {
-                let _ = writeln!(out, "$var wire 1 {id} {local} $end");
-            } else {
-                let _ = writeln!(out, "$var integer 64 {id} {local} $end");
+    out.push_str(&s.finish());
+    out
+}
+
+enum Sig {
+    Var { slot: u32, is_bool: bool },
+    Event(u32),
+    State(u32),
+}
+
+/// A VCD file written tick by tick: the last value of each signal is all it keeps.
+pub struct Stream<'a> {
+    p: &'a Program,
+    sigs: Vec<(String, Sig)>,
+    last: Vec<Option<i64>>,
+    last_tick: Option<u64>,
+    tick_ms: i64,
+}
+
+impl<'a> Stream<'a> {
+    /// The stream and the file's header (the signal definitions).
+    pub fn new(p: &'a Program, views: &Views, tick_ms: i64) -> (Self, String) {
+        let mut sigs: Vec<(String, Sig)> = Vec::new();
+        let mut out = String::new();
+        let _ = writeln!(
+            out,
+            "$date statecheck trace $end\n$version statecheck {} $end\n$timescale 1ms $end",
+            env!("CARGO_PKG_VERSION")
+        );
+        for (i, inst) in views.instances.iter().enumerate() {
+            let inst = &inst.name;
+            let _ = writeln!(out, "$scope module {} $end", vcd_name(inst));
+            let prefix = format!("{inst}.");
+            for v in views.vars.iter().filter(|v| v.name.starts_with(&prefix)) {
+                let id = ident(sigs.len());
+                let local = vcd_name(&v.name[prefix.len()..]);
+                if v.is_bool {
+                    let _ = writeln!(out, "$var wire 1 {id} {local} $end");
+                } else {
+                    let _ = writeln!(out, "$var integer 64 {id} {local} $end");
+                }
+                sigs.push((
+                    id,
+                    Sig::Var {
+                        slot: v.slot,
+                        is_bool: v.is_bool,
+                    },
+                ));
             }
-            sigs.push((
-                id,
-                Sig::Var {
-                    slot: v.slot,
-                    width: v.width,
-                    is_bool: v.is_bool,
-                },
-            ));
-        }
-        for (name, slot) in views.events.iter().filter(|(n, _)| n.starts_with(&prefix)) {
-            let id = ident(sigs.len());
-            let _ = writeln!(
-                out,
-                "$var wire 1 {id} {} $end",
-                vcd_name(&name[prefix.len()..])
-            );
-            sigs.push((id, Sig::Event(*slot)));
-        }
-        // States as a scope tree mirroring the hierarchy: `states.Go.GoLeft` is the wire
-        // `GoLeft` in scope `Go` in scope `states` (the wire `Go` sits beside scope `Go`).
-        let _ = writeln!(out, "$scope module states $end");
-        let mut open: Vec<String> = Vec::new();
-        for s in &views.instances[i].states {
-            let (path, e) = (&s.path, &s.active);
-            let parts: Vec<&str> = path.split('.').collect();
-            let (parent, leaf) = parts.split_at(parts.len() - 1);
-            let common = open
-                .iter()
-                .zip(parent)
-                .take_while(|(a, b)| a.as_str() == **b)
-                .count();
-            while open.len() > common {
-                open.pop();
+            for (name, slot) in views.events.iter().filter(|(n, _)| n.starts_with(&prefix)) {
+                let id = ident(sigs.len());
+                let _ = writeln!(
+                    out,
+                    "$var wire 1 {id} {} $end",
+                    vcd_name(&name[prefix.len()..])
+                );
+                sigs.push((id, Sig::Event(*slot)));
+            }
+            // States as a scope tree mirroring the hierarchy: `states.Go.GoLeft` is the wire
+            // `GoLeft` in scope `Go` in scope `states` (the wire `Go` sits beside scope `Go`).
+            let _ = writeln!(out, "$scope module states $end");
+            let mut open: Vec<String> = Vec::new();
+            for s in &views.instances[i].states {
+                let (path, e) = (&s.path, &s.active);
+                let parts: Vec<&str> = path.split('.').collect();
+                let (parent, leaf) = parts.split_at(parts.len() - 1);
+                let common = open
+                    .iter()
+                    .zip(parent)
+                    .take_while(|(a, b)| a.as_str() == **b)
+                    .count();
+                while open.len() > common {
+                    open.pop();
+                    let _ = writeln!(out, "$upscope $end");
+                }
+                for p in &parent[common..] {
+                    let _ = writeln!(out, "$scope module {} $end", vcd_name(p));
+                    open.push((*p).to_string());
+                }
+                let id = ident(sigs.len());
+                let _ = writeln!(out, "$var wire 1 {id} {} $end", vcd_name(leaf[0]));
+                sigs.push((id, Sig::State(*e)));
+            }
+            for _ in open {
                 let _ = writeln!(out, "$upscope $end");
             }
-            for p in &parent[common..] {
-                let _ = writeln!(out, "$scope module {} $end", vcd_name(p));
-                open.push((*p).to_string());
-            }
-            let id = ident(sigs.len());
-            let _ = writeln!(out, "$var wire 1 {id} {} $end", vcd_name(leaf[0]));
-            sigs.push((id, Sig::State(*e)));
+            let _ = writeln!(out, "$upscope $end\n$upscope $end");
         }
-        for _ in open {
-            let _ = writeln!(out, "$upscope $end");
-        }
-        let _ = writeln!(out, "$upscope $end\n$upscope $end");
+        let _ = writeln!(out, "$enddefinitions $end");
+        let last = vec![None; sigs.len()];
+        (
+            Stream {
+                p,
+                sigs,
+                last,
+                last_tick: None,
+                tick_ms,
+            },
+            out,
+        )
     }
-    let _ = writeln!(out, "$enddefinitions $end");
-    let mut last: Vec<Option<i64>> = vec![None; sigs.len()];
-    for rec in trace {
+
+    /// The value changes of one tick.
+    pub fn tick(&mut self, tick: u64, slots: &[i64]) -> String {
         let mut changes = String::new();
-        for (k, (id, sig)) in sigs.iter().enumerate() {
+        for (k, (id, sig)) in self.sigs.iter().enumerate() {
             let (v, bit) = match sig {
-                Sig::Var {
-                    slot,
-                    is_bool,
-                    width,
-                } => {
-                    let _ = width;
-                    (rec.slots[*slot as usize], *is_bool)
-                }
-                Sig::Event(slot) => (rec.slots[*slot as usize], true),
-                Sig::State(e) => (eval(&p.nodes, &rec.slots, *e).unwrap_or(0), true),
+                Sig::Var { slot, is_bool } => (slots[*slot as usize], *is_bool),
+                Sig::Event(slot) => (slots[*slot as usize], true),
+                Sig::State(e) => (eval(&self.p.nodes, slots, *e).unwrap_or(0), true),
             };
-            if last[k] == Some(v) {
+            if self.last[k] == Some(v) {
                 continue;
             }
-            last[k] = Some(v);
+            self.last[k] = Some(v);
             if bit {
                 let _ = writeln!(changes, "{}{id}", if v != 0 { 1 } else { 0 });
             } else {
                 let _ = writeln!(changes, "b{:b} {id}", v);
             }
         }
-        if !changes.is_empty() || rec.tick == 0 {
-            let _ = writeln!(out, "#{}", rec.tick as i64 * tick_ms);
-            out.push_str(&changes);
+        self.last_tick = Some(tick);
+        if changes.is_empty() && tick != 0 {
+            return changes;
         }
+        format!("#{}\n{changes}", tick as i64 * self.tick_ms)
     }
-    if let Some(rec) = trace.last() {
-        let _ = writeln!(out, "#{}", (rec.tick as i64 + 1) * tick_ms);
+
+    /// The end of the last tick (call once after it).
+    pub fn finish(&mut self) -> String {
+        self.last_tick
+            .map(|t| format!("#{}\n", (t as i64 + 1) * self.tick_ms))
+            .unwrap_or_default()
     }
-    out
 }

@@ -3,7 +3,7 @@
 
 use crate::load::Loaded;
 use crate::output;
-use anyhow::{Context, Result};
+use anyhow::Result;
 use statecheck_explicit::{PropKind, Report};
 use statecheck_ir::view::TraceView as Views;
 use statecheck_ir::Program;
@@ -31,7 +31,7 @@ pub fn process(
     vcd: bool,
 ) -> Result<Vec<Option<Cex>>> {
     if let Some(d) = dir {
-        std::fs::create_dir_all(d).with_context(|| format!("cannot create `{d}`"))?;
+        crate::outpath::create_dir(d, "--cex-dir")?;
     }
     let views = Views::new(&loaded.model, program);
     let mut out = Vec::with_capacity(rep.results.len());
@@ -96,7 +96,7 @@ pub fn process(
                 let file = format!("{d}/{}.scn", file_name(&r.name));
                 let mut text = scenario::format(&sc, program);
                 text.insert_str(0, &format!("# counterexample for `{}` ({}, {}): {} ticks; replay with\n#   statecheck sim {} --system {} --scenario {file}\n", r.name, r.kind.as_str(), r.verdict.as_str(), r.depth, loaded.path, program.name));
-                std::fs::write(&file, text).with_context(|| format!("cannot write `{file}`"))?;
+                crate::outpath::write(std::path::Path::new(&file), text.as_bytes())?;
                 if vcd {
                     let vfile = format!("{d}/{}.vcd", file_name(&r.name));
                     let text = output::vcd::render(
@@ -105,8 +105,7 @@ pub fn process(
                         &run.trace,
                         loaded.model.tick_ms.unwrap_or(1),
                     );
-                    std::fs::write(&vfile, text)
-                        .with_context(|| format!("cannot write `{vfile}`"))?;
+                    crate::outpath::write(std::path::Path::new(&vfile), text.as_bytes())?;
                 }
                 Some(file)
             }

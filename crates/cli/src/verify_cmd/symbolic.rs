@@ -64,7 +64,7 @@ pub fn write_certificate(run: &Run, file: &str) -> Result<()> {
         [(i, (aig, inv))] => {
             let name = &run.report.results[*i].name;
             let text = statecheck_symbolic::cert::write(aig, name, inv);
-            std::fs::write(file, text).with_context(|| format!("cannot write `{file}`"))?;
+            crate::outpath::write(std::path::Path::new(file), text.as_bytes())?;
             eprintln!(
                 "wrote {file}: inductive invariant of `{name}`, {} clause(s)",
                 inv.len()
@@ -80,6 +80,7 @@ pub fn write_certificate(run: &Run, file: &str) -> Result<()> {
 
 /// `--check-certificate FILE`: check the invariant in FILE for the one circuit given.
 pub fn check_certificate(aig: &Aig, name: &str, file: &str) -> Result<u8> {
+    crate::outpath::note_input(file);
     let text = std::fs::read_to_string(file).with_context(|| format!("cannot read `{file}`"))?;
     let inv = statecheck_symbolic::cert::parse(&text, aig.latches.len())
         .map_err(|e| anyhow::anyhow!("{file}: {e}"))?;
@@ -111,20 +112,20 @@ pub fn model_problem(p: &Program, names: &[String]) -> Result<(Aig, String)> {
 }
 
 /// Names of an AIGER file's properties (`b0`, `b1`, ... unless the symbol table names them).
+/// The bad outputs' names as shown and selected: the file's symbols with control characters
+/// escaped (a symbol is external text and must not drive the terminal), else `bN`.
 fn aiger_names(aig: &Aig) -> Vec<String> {
     (0..aig.bad.len())
-        .map(|i| {
-            aig.bad_names
-                .get(i)
-                .cloned()
-                .flatten()
-                .unwrap_or_else(|| format!("b{i}"))
+        .map(|i| match aig.bad_names.get(i).cloned().flatten() {
+            Some(n) => crate::diag::escape_controls(&n).into_owned(),
+            None => format!("b{i}"),
         })
         .collect()
 }
 
 /// Read an AIGER file.
 pub fn load_aiger(path: &str) -> Result<Aig> {
+    crate::outpath::note_input(path);
     let bytes = std::fs::read(path).with_context(|| format!("cannot read `{path}`"))?;
     statecheck_symbolic::aiger::parse(&bytes).map_err(|e| anyhow::anyhow!("{path}: {e}"))
 }
@@ -218,8 +219,8 @@ pub fn run_aiger(a: &AigerRun) -> Result<u8> {
     if let Some(cf) = a.certificate {
         match invariants.as_slice() {
             [(g, name, inv)] => {
-                std::fs::write(cf, statecheck_symbolic::cert::write(g, name, inv))
-                    .with_context(|| format!("cannot write `{cf}`"))?;
+                let text = statecheck_symbolic::cert::write(g, name, inv);
+                crate::outpath::write(std::path::Path::new(cf), text.as_bytes())?;
                 eprintln!(
                     "wrote {cf}: inductive invariant of `{name}`, {} clause(s)",
                     inv.len()

@@ -9,8 +9,8 @@
 //! that realises it, so a path is a scenario. Memory: the packed state, its index entry
 //! (about 40 bytes), 16 bytes per node and 8 bytes per distinct edge.
 
-use crate::inputs::InputSpace;
 use crate::pack::Packer;
+use statecheck_ir::assume::InputSpace;
 use statecheck_ir::{ExprId, Machine, Prepared, Program};
 use std::collections::HashMap;
 use std::time::{Duration, Instant};

@@ -11,9 +11,9 @@
 
 mod expand;
 
-use crate::inputs::InputSpace;
 use crate::pack::Packer;
 use crate::successors::{Build, CompiledSuccessors, SuccessorCompiler};
+use statecheck_ir::assume::InputSpace;
 use statecheck_ir::Program;
 use std::sync::{Arc, OnceLock};
 use std::time::{Duration, Instant};

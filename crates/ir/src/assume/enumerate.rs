@@ -1,15 +1,15 @@
 //! Listing the input vectors that input-only `assume`s allow, without walking the whole raw
 //! space: a depth-first assignment of the inputs (last input first, so vectors come out in
 //! increasing index order) that prunes a partial assignment as soon as the interval evaluation
-//! ([`crate::interval`]) of one conjunct is certainly false. Each complete vector is then
+//! ([`super::interval`]) of one conjunct is certainly false. Each complete vector is then
 //! decided by the exact evaluator, so pruning only saves work and never changes the list.
 //!
 //! Example: 24 boolean inputs under "at most one is true" (written as pairwise exclusions)
 //! visit a few hundred partial assignments instead of 2^24 vectors.
 
-use crate::interval::IntervalEval;
-use crate::reads::{conjuncts, inputs_read};
-use statecheck_ir::{ExprId, Machine, Program, SlotId};
+use super::interval::IntervalEval;
+use super::reads::{conjuncts, inputs_read};
+use crate::{ExprId, Machine, Program, SlotId};
 
 /// Bounds of one enumeration.
 #[derive(Clone, Copy, Debug)]

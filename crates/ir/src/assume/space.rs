@@ -4,13 +4,13 @@
 //! The raw space is mixed radix over [`Program::inputs`], the first input varying fastest.
 //! Every `assume` is split into its `&&` conjuncts, and each conjunct is classified by what it
 //! reads: inputs only (solved once, up front: the allowed vectors are listed, see
-//! [`crate::enumerate`]), state only (evaluated once per state), or both (evaluated on every
+//! the pruned enumeration of the parent module), state only (evaluated once per state), or both (evaluated on every
 //! transition). When the vectors are listed, a transition's input position is its index in
 //! the list; otherwise it is the raw mixed-radix index.
 
-use crate::enumerate::{allowed, Budget};
-use crate::reads::{conjuncts, input_slots, reads_only, state_slots};
-use statecheck_ir::{ExprId, Program, SlotId};
+use super::enumerate::{allowed, Budget};
+use super::reads::{conjuncts, input_slots, reads_only, state_slots};
+use crate::{ExprId, Program, SlotId};
 
 /// Most vectors [`InputSpace::solve_static`] lists up front.
 pub const MAX_STATIC_ENUMERATION: u128 = 1 << 20;
@@ -153,6 +153,11 @@ impl InputSpace {
         } else {
             self.count
         }
+    }
+
+    /// The declared bounds of input `k` (in [`Program::inputs`] order).
+    pub fn bounds(&self, k: usize) -> (i64, i64) {
+        (self.lo[k], self.hi[k])
     }
 
     /// The first vector (every input at its lowest value).

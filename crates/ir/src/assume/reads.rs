@@ -2,13 +2,13 @@
 //! front (inputs only), once per state (state only) or on every transition (both), and a
 //! property once per new state instead of on every transition.
 
-use statecheck_ir::BinOp;
-use statecheck_ir::{ExprId, Node, Program};
+use crate::BinOp;
+use crate::{ExprId, Node, Program};
 use std::ops::Range;
 
 /// True when expression `e` reads no slot outside `slots`. Every node kind is followed,
 /// including the `Let`/`Local` pairs an inlined function call lowers to.
-pub(crate) fn reads_only(p: &Program, e: ExprId, slots: Range<u32>) -> bool {
+pub fn reads_only(p: &Program, e: ExprId, slots: Range<u32>) -> bool {
     let mut stack = vec![e];
     while let Some(e) = stack.pop() {
         match p.nodes.get(e as usize) {
@@ -31,18 +31,18 @@ pub(crate) fn reads_only(p: &Program, e: ExprId, slots: Range<u32>) -> bool {
 }
 
 /// The slots of the persistent state.
-pub(crate) fn state_slots(p: &Program) -> Range<u32> {
+pub fn state_slots(p: &Program) -> Range<u32> {
     0..p.n_state as u32
 }
 
 /// The input slots.
-pub(crate) fn input_slots(p: &Program) -> Range<u32> {
+pub fn input_slots(p: &Program) -> Range<u32> {
     let lo = p.n_state as u32;
     lo..lo + p.inputs.len() as u32
 }
 
 /// The input slots `e` reads (sorted, deduplicated).
-pub(crate) fn inputs_read(p: &Program, e: ExprId) -> Vec<u32> {
+pub fn inputs_read(p: &Program, e: ExprId) -> Vec<u32> {
     let inputs = input_slots(p);
     let mut out = Vec::new();
     let mut stack = vec![e];
@@ -64,7 +64,7 @@ pub(crate) fn inputs_read(p: &Program, e: ExprId) -> Vec<u32> {
 
 /// The conjuncts of `e`: `a && b` split recursively (`&&` short-circuits to 0 exactly when a
 /// conjunct is 0 or fails, so the conjunction holds exactly when every conjunct does).
-pub(crate) fn conjuncts(p: &Program, e: ExprId, out: &mut Vec<ExprId>) {
+pub fn conjuncts(p: &Program, e: ExprId, out: &mut Vec<ExprId>) {
     match p.nodes.get(e as usize) {
         Some(Node::Binary(BinOp::And, a, b, _)) => {
             conjuncts(p, *a, out);

@@ -8,8 +8,8 @@
 //! to the full range, which never prunes; the final decision on a complete vector is always the
 //! exact evaluator's.
 
-use statecheck_ir::{BinOp, UnOp};
-use statecheck_ir::{ExprId, Node, Program};
+use crate::{BinOp, UnOp};
+use crate::{ExprId, Node, Program};
 
 /// A closed interval of `i64` values.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

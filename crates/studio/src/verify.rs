@@ -1,0 +1,107 @@
+//! "Verify" from the page: the properties decided by the portfolio of `crates/verify` (the
+//! library behind `statecheck verify`), each verdict sent to the page the moment it is
+//! decided, with its counterexample or witness as a scenario the page can replay.
+
+use crate::load::Loaded;
+use serde_json::{json, Value};
+use statecheck_sim::scenario;
+use statecheck_verify::{Engine, Event, ExplicitOptions, Meta, Options, PropResult};
+use std::sync::Arc;
+use std::time::Duration;
+
+/// Longest verification the page may ask for.
+pub const MAX_TIMEOUT_S: u64 = 300;
+/// Timeout when the page names none.
+pub const DEFAULT_TIMEOUT_S: u64 = 30;
+
+/// The engine named by the page (`auto` when `None`).
+pub fn engine(name: Option<&str>) -> Result<Engine, String> {
+    Ok(match name.unwrap_or("auto") {
+        "auto" => Engine::Auto,
+        "explicit" => Engine::Explicit,
+        "bmc" => Engine::Bmc,
+        "kind" => Engine::Kind,
+        "ic3" => Engine::Ic3,
+        other => {
+            return Err(format!(
+                "unknown engine `{other}` (auto, explicit, bmc, kind, ic3)"
+            ))
+        }
+    })
+}
+
+/// One result as the page shows it.
+pub fn result(l: &Loaded, index: usize, r: &PropResult, meta: &Meta) -> Value {
+    let p = &l.program;
+    let scenario_text = r.counterexample.as_ref().map(|vectors| {
+        let sc = match r.loop_start {
+            Some(k) => scenario::from_lasso(p, vectors, k as usize),
+            None => scenario::from_input_vectors(p, vectors),
+        };
+        format!(
+            "# {} for `{}` ({}, {}): {} ticks, from the studio's verify\n{}",
+            if r.verdict.as_str() == "reachable" {
+                "witness"
+            } else {
+                "counterexample"
+            },
+            r.name,
+            r.kind.as_str(),
+            r.verdict.as_str(),
+            r.depth,
+            scenario::format(&sc, p)
+        )
+    });
+    json!({
+        "type": "verdict",
+        "index": index,
+        "name": r.name,
+        "kind": r.kind.as_str(),
+        "verdict": r.verdict.as_str(),
+        "depth": r.depth,
+        "engine": meta.engine,
+        "time_s": meta.time_s.or(meta.decided_at_s),
+        "reason": meta.reason,
+        "note": r.note,
+        "scenario": scenario_text,
+    })
+}
+
+/// Run the verification (blocking: call it off the async threads); `send` gets each verdict
+/// as it is decided and a final `verify_done` message.
+pub fn run(l: Arc<Loaded>, engine: Engine, timeout_s: u64, send: &(dyn Fn(Value) + Sync)) {
+    let opts = Options {
+        engine,
+        check: ExplicitOptions {
+            timeout: Some(Duration::from_secs(timeout_s.clamp(1, MAX_TIMEOUT_S))),
+            threads: 1,
+            ..ExplicitOptions::default()
+        },
+    };
+    let t0 = std::time::Instant::now();
+    let outcome = statecheck_verify::verify(&l.program, &opts, &|e| {
+        if let Event::Decided {
+            index,
+            result: r,
+            meta,
+        } = e
+        {
+            send(result(&l, index, r, meta));
+        }
+    });
+    let done = match outcome {
+        Ok(run) => {
+            let results: Vec<Value> = run
+                .report
+                .results
+                .iter()
+                .zip(&run.meta)
+                .enumerate()
+                .map(|(i, (r, m))| result(&l, i, r, m))
+                .collect();
+            json!({"type": "verify_done", "results": results, "time_s": t0.elapsed().as_secs_f64()})
+        }
+        Err(e) => json!({"type": "verify_done", "error": e.to_string(), "results": []}),
+    };
+    send(done);
+}
