@@ -58,6 +58,7 @@ pub fn render_sources(sources: &Sources, diags: &[Diagnostic], color: bool) -> S
         .collect();
     // One line table per file for all diagnostics (per diagnostic, thousands of warnings
     // were quadratic).
+    let mut srcs = ariadne::sources(cache.iter().map(|(n, t)| (n.clone(), t.clone())));
     let indexes: Vec<LineIndex> = cache.iter().map(|(_, t)| LineIndex::new(t)).collect();
     for d in diags {
         let kind = match d.severity {
@@ -108,8 +109,7 @@ pub fn render_sources(sources: &Sources, diags: &[Diagnostic], color: bool) -> S
         if let Some(h) = &d.hint {
             b = b.with_help(h);
         }
-        let srcs = ariadne::sources(cache.iter().map(|(n, t)| (n.clone(), t.clone())));
-        let _ = b.finish().write(srcs, &mut out);
+        let _ = b.finish().write(&mut srcs, &mut out);
     }
     String::from_utf8_lossy(&out).into_owned()
 }
