@@ -1,25 +1,81 @@
 //! Rendering diagnostics for people: `file:line:col`, the span underlined, the hint.
+//!
+//! A program may consist of several files (imports); every span is an offset into the
+//! [`Sources`] text of all of them, and each diagnostic and label is shown in the file that
+//! contains it, named as the resolver named it.
 
-use ariadne::{Color, Config, IndexType, Label, Report, ReportKind, Source};
-use statecheck_base::{Diagnostic, LineIndex, Severity};
+use ariadne::{Color, Config, IndexType, Label, Report, ReportKind};
+use statecheck_base::{Diagnostic, LineIndex, Severity, Span};
+use statecheck_model::imports::{SourceFile, Sources};
 use std::io::IsTerminal;
 
 /// Render diagnostics of one source file to a string.
+#[cfg(test)]
 pub fn render(path: &str, source: &str, diags: &[Diagnostic], color: bool) -> String {
+    render_sources(&single(path, source), diags, color)
+}
+
+/// One file as [`Sources`].
+pub fn single(path: &str, source: &str) -> Sources {
+    Sources {
+        text: source.to_string(),
+        files: vec![SourceFile {
+            key: path.to_string(),
+            name: path.to_string(),
+            start: 0,
+            end: source.len(),
+        }],
+    }
+}
+
+/// Where a span is: its file (the last one if it is in none) and its range in that file.
+fn place(sources: &Sources, span: Span) -> Option<(&SourceFile, std::ops::Range<usize>)> {
+    if let Some((f, at)) = sources.locate(span.start as usize) {
+        let text = sources.file_text(f);
+        let len = text.len();
+        let mut s = at.min(len);
+        while !text.is_char_boundary(s) {
+            s -= 1;
+        }
+        let mut e = (span.end as usize).saturating_sub(f.start).clamp(s, len);
+        while !text.is_char_boundary(e) {
+            e += 1;
+        }
+        return Some((f, s..e));
+    }
+    let f = sources.files.last()?;
+    let len = f.end - f.start;
+    Some((f, len..len))
+}
+
+/// Render diagnostics of a program of one or more files to a string.
+pub fn render_sources(sources: &Sources, diags: &[Diagnostic], color: bool) -> String {
     let mut out = Vec::new();
-    let idx = LineIndex::new(source);
-    // One line table for all diagnostics: building it per diagnostic made a file with
-    // thousands of warnings quadratic (4,000 unused inputs took a minute).
-    let src = Source::from(source);
+    let cache: Vec<(String, String)> = sources
+        .files
+        .iter()
+        .map(|f| (f.name.clone(), sources.file_text(f).to_string()))
+        .collect();
+    // One line table per file for all diagnostics (per diagnostic, thousands of warnings
+    // were quadratic).
+    let mut srcs = ariadne::sources(cache.iter().map(|(n, t)| (n.clone(), t.clone())));
+    let indexes: Vec<LineIndex> = cache.iter().map(|(_, t)| LineIndex::new(t)).collect();
     for d in diags {
         let kind = match d.severity {
             Severity::Error => ReportKind::Error,
             Severity::Warning => ReportKind::Warning,
             Severity::Note => ReportKind::Advice,
         };
-        let range = clamp(d.span.range(), source);
+        let Some((file, range)) = place(sources, d.span) else {
+            continue;
+        };
+        let path = file.name.clone();
+        let fi = sources.files.partition_point(|f| f.start < file.start);
+        let Some(idx) = indexes.get(fi) else {
+            continue;
+        };
         let (line, col) = idx.line_col(range.start as u32);
-        let mut b = Report::build(kind, (path.to_string(), range.clone()))
+        let mut b = Report::build(kind, (path.clone(), range.clone()))
             .with_config(
                 Config::default()
                     .with_color(color)
@@ -28,7 +84,7 @@ pub fn render(path: &str, source: &str, diags: &[Diagnostic], color: bool) -> St
             .with_code(d.code)
             .with_message(format!("{} ({path}:{line}:{col})", d.message))
             .with_label(
-                Label::new((path.to_string(), range))
+                Label::new((path.clone(), range))
                     .with_message(if d.label.is_empty() {
                         "here".to_string()
                     } else {
@@ -41,8 +97,11 @@ pub fn render(path: &str, source: &str, diags: &[Diagnostic], color: bool) -> St
                     }),
             );
         for l in &d.secondary {
+            let Some((f, r)) = place(sources, l.span) else {
+                continue;
+            };
             b = b.with_label(
-                Label::new((path.to_string(), clamp(l.span.range(), source)))
+                Label::new((f.name.clone(), r))
                     .with_message(&l.message)
                     .with_color(Color::Blue),
             );
@@ -50,34 +109,54 @@ pub fn render(path: &str, source: &str, diags: &[Diagnostic], color: bool) -> St
         if let Some(h) = &d.hint {
             b = b.with_help(h);
         }
-        let _ = b.finish().write((path.to_string(), &src), &mut out);
+        let _ = b.finish().write(&mut srcs, &mut out);
     }
     String::from_utf8_lossy(&out).into_owned()
-}
-
-/// `r` inside `source` and on character boundaries (the renderer slices the text there).
-fn clamp(r: std::ops::Range<usize>, source: &str) -> std::ops::Range<usize> {
-    let len = source.len();
-    let mut s = r.start.min(len);
-    while !source.is_char_boundary(s) {
-        s -= 1;
-    }
-    let mut e = r.end.clamp(s, len);
-    while !source.is_char_boundary(e) {
-        e += 1;
-    }
-    s..e
 }
 
 /// Print diagnostics to stderr, in color on a terminal (as JSON lines with
 /// `--message-format json`).
 pub fn eprint(path: &str, source: &str, diags: &[Diagnostic]) {
+    eprint_sources(&single(path, source), diags);
+}
+
+/// A diagnostic with its spans made relative to the file of its primary span (secondary
+/// labels in other files are dropped), and that file.
+fn localise<'s>(sources: &'s Sources, d: &Diagnostic) -> Option<(&'s SourceFile, Diagnostic)> {
+    let (f, r) = place(sources, d.span)?;
+    let mut local = d.clone();
+    local.span = Span::new(r.start, r.end);
+    local.secondary = d
+        .secondary
+        .iter()
+        .filter_map(|l| {
+            let (g, r) = place(sources, l.span)?;
+            (g.start == f.start).then(|| statecheck_base::Label {
+                span: Span::new(r.start, r.end),
+                message: l.message.clone(),
+            })
+        })
+        .collect();
+    Some((f, local))
+}
+
+/// Print diagnostics of a program of one or more files to stderr, in color on a terminal
+/// (as JSON lines, each naming its file, with `--message-format json`).
+pub fn eprint_sources(sources: &Sources, diags: &[Diagnostic]) {
     if crate::diag_json::is_json() {
-        eprint!("{}", crate::diag_json::render(path, source, diags));
+        let mut out = String::new();
+        for d in diags {
+            if let Some((f, local)) = localise(sources, d) {
+                let text = sources.file_text(f);
+                out.push_str(&crate::diag_json::to_json(&f.name, text, &local).to_string());
+                out.push('\n');
+            }
+        }
+        eprint!("{out}");
         return;
     }
     let color = std::io::stderr().is_terminal() && std::env::var_os("NO_COLOR").is_none();
-    eprint!("{}", render(path, source, diags, color));
+    eprint!("{}", render_sources(sources, diags, color));
 }
 
 /// `text` with control characters (ANSI escapes, carriage returns, ...) shown as `\u{..}`

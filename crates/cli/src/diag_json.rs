@@ -64,13 +64,3 @@ pub fn to_json(path: &str, source: &str, d: &Diagnostic) -> Value {
         "hint": d.hint,
     })
 }
-
-/// The diagnostics as JSON lines.
-pub fn render(path: &str, source: &str, diags: &[Diagnostic]) -> String {
-    let mut out = String::new();
-    for d in diags {
-        out.push_str(&to_json(path, source, d).to_string());
-        out.push('\n');
-    }
-    out
-}

@@ -1,17 +1,114 @@
 //! The front half of every command: read, parse, check, choose a system, lower.
+//!
+//! Imports are resolved here (the model layer does no I/O): a path is looked up relative to
+//! the importing file, then in each `--lib` directory, then in each directory of
+//! `STATECHECK_PATH`, in that order (docs/components.md).
 
 use crate::diag;
 use anyhow::{bail, Context, Result};
 use statecheck_base::Diagnostic;
 use statecheck_ir::Program;
+use statecheck_model::imports::{FileText, Resolver, Sources};
 use statecheck_model::Model;
+use std::path::{Path, PathBuf};
+use std::sync::OnceLock;
+
+/// The `--lib` directories of this run (set once by `main`).
+static LIB_DIRS: OnceLock<Vec<PathBuf>> = OnceLock::new();
+
+/// Record the `--lib` directories; later calls are ignored.
+pub fn set_lib_dirs(dirs: Vec<String>) {
+    let _ = LIB_DIRS.set(dirs.into_iter().map(PathBuf::from).collect());
+}
+
+/// The library search path: `--lib` directories, then `STATECHECK_PATH`'s.
+fn search_path() -> Vec<PathBuf> {
+    let mut dirs: Vec<PathBuf> = LIB_DIRS.get().cloned().unwrap_or_default();
+    if let Some(p) = std::env::var_os("STATECHECK_PATH") {
+        dirs.extend(std::env::split_paths(&p).filter(|d| !d.as_os_str().is_empty()));
+    }
+    dirs
+}
+
+/// Resolves imports on the file system. Keys are canonical paths; names are the paths as
+/// found (relative to the working directory when the user's paths were).
+struct FsResolver {
+    dirs: Vec<PathBuf>,
+    /// Display name of each key, to build names relative to the importing file's.
+    names: std::collections::BTreeMap<String, PathBuf>,
+}
+
+/// `a/./b/../c` as `a/c` (lexically; used for display names only).
+fn tidy(p: &Path) -> PathBuf {
+    let mut out = PathBuf::new();
+    for c in p.components() {
+        match c {
+            std::path::Component::CurDir => {}
+            std::path::Component::ParentDir
+                if matches!(
+                    out.components().next_back(),
+                    Some(std::path::Component::Normal(_))
+                ) =>
+            {
+                out.pop();
+            }
+            c => out.push(c),
+        }
+    }
+    out
+}
+
+impl FsResolver {
+    fn read(&mut self, display: PathBuf) -> Option<FileText> {
+        let text = std::fs::read_to_string(&display).ok()?;
+        let key = std::fs::canonicalize(&display)
+            .unwrap_or_else(|_| display.clone())
+            .to_string_lossy()
+            .into_owned();
+        let display = tidy(&display);
+        self.names.entry(key.clone()).or_insert(display.clone());
+        Some(FileText {
+            key,
+            name: display.to_string_lossy().into_owned(),
+            text,
+        })
+    }
+}
+
+impl Resolver for FsResolver {
+    fn resolve(&mut self, from: &str, path: &str) -> Result<FileText, String> {
+        let from_name = self.names.get(from).cloned().unwrap_or_else(|| from.into());
+        let here = from_name.parent().unwrap_or(Path::new("")).join(path);
+        let mut tried = vec![here.clone()];
+        if let Some(f) = self.read(here) {
+            return Ok(f);
+        }
+        for d in self.dirs.clone() {
+            let p = d.join(path);
+            tried.push(p.clone());
+            if let Some(f) = self.read(p) {
+                return Ok(f);
+            }
+        }
+        let tried: Vec<String> = tried.iter().map(|p| format!("`{}`", p.display())).collect();
+        Err(format!(
+            "looked for {}; add a directory with `--lib DIR` or `STATECHECK_PATH`",
+            tried.join(", ")
+        ))
+    }
+}
 
 /// A model file after checking.
 pub struct Loaded {
     /// The path as given.
     pub path: String,
-    /// Its text.
+    /// The text of the file and of every file it imports, one after the other: every span of
+    /// the model is an offset into it (see `sources`).
     pub source: String,
+    /// The files of the program, to name the file of a span.
+    pub sources: Sources,
+    /// The merged syntax tree the model was checked from.
+    pub file: statecheck_syntax::ast::File,
     /// The checked model.
     pub model: Model,
     /// All diagnostics (errors, warnings).
@@ -53,7 +150,20 @@ pub fn load(path: &str, show_warnings: bool) -> Result<Loaded> {
             return Err(ModelErrors.into());
         }
     };
-    let (file, mut diags) = statecheck_syntax::parse(&source);
+    let key = std::fs::canonicalize(path)
+        .map_or_else(|_| path.to_string(), |p| p.to_string_lossy().into_owned());
+    let mut resolver = FsResolver {
+        dirs: search_path(),
+        names: [(key.clone(), PathBuf::from(path))].into_iter().collect(),
+    };
+    let root = FileText {
+        key,
+        name: path.to_string(),
+        text: source,
+    };
+    let program = statecheck_model::imports::load(root, &mut resolver);
+    let (file, sources, mut diags) = (program.file, program.sources, program.diags);
+    let source = sources.text.clone();
     let (model, more) = if diags.iter().any(Diagnostic::is_error) {
         // Still check what parsed, to report name and type errors in the same run, but drop
         // diagnostics that may be consequences of the syntax errors' recovery.
@@ -74,13 +184,15 @@ pub fn load(path: &str, show_warnings: bool) -> Result<Loaded> {
         .filter(|d| show_warnings || d.is_error())
         .cloned()
         .collect();
-    diag::eprint(path, &source, &shown);
+    diag::eprint_sources(&sources, &shown);
     if diags.iter().any(Diagnostic::is_error) {
         return Err(ModelErrors.into());
     }
     Ok(Loaded {
         path: path.to_string(),
         source,
+        sources,
+        file,
         model,
         diags,
     })
@@ -136,7 +248,7 @@ impl Loaded {
         match statecheck_ir::lower(&self.model, sys) {
             Ok(p) => Ok(p),
             Err(diags) => {
-                diag::eprint(&self.path, &self.source, &diags);
+                diag::eprint_sources(&self.sources, &diags);
                 Err(ModelErrors.into())
             }
         }

@@ -29,6 +29,10 @@ use std::process::ExitCode;
 struct Cli {
     #[command(subcommand)]
     command: Command,
+    /// A library directory searched for imported files (after the importing file's own
+    /// directory; repeatable; `STATECHECK_PATH` directories come after these).
+    #[arg(long = "lib", value_name = "DIR", global = true)]
+    lib: Vec<String>,
     /// How diagnostics are printed on standard error: `human` (rendered, the default) or
     /// `json` (one JSON object per line; docs/tools.md).
     #[arg(long, global = true, value_enum, default_value_t = MessageFormat::Human)]
@@ -127,6 +131,7 @@ fn main() -> ExitCode {
 }
 
 fn run(cli: Cli) -> Result<u8> {
+    load::set_lib_dirs(cli.lib);
     diag_json::set_json(cli.message_format == MessageFormat::Json);
     match cli.command {
         Command::Check { model } => {

@@ -6,7 +6,6 @@ use crate::sim_sink::{Format, SimSink};
 use crate::{write_out, Exit};
 use anyhow::{bail, Result};
 use clap::Args;
-use statecheck_base::LineIndex;
 use statecheck_ir::view::TraceView as Views;
 use statecheck_sim::{random::RandomInputs, scenario, NoInput, Options, ScenarioInputs, Stop};
 
@@ -176,8 +175,7 @@ pub fn run(a: SimArgs) -> Result<u8> {
             bail!("give a scenario (--scenario FILE) or a number of random ticks (--random N)")
         }
     };
-    let (mut status, code, mut message) =
-        describe_stop(&run.stop, &program, &loaded.source, &loaded.path);
+    let (mut status, code, mut message) = describe_stop(&run.stop, &program, &loaded.sources);
     if let Some(why) = run.no_input {
         let initial;
         let slots = match &sink.last {
@@ -237,7 +235,7 @@ pub fn run(a: SimArgs) -> Result<u8> {
             serde_json::to_string(&reached)?
         );
         if let (Some(counts), Some(_)) = (&run.coverage, &a.coverage) {
-            let c = output::coverage::to_json(&program, counts, &loaded.source);
+            let c = output::coverage::to_json(&program, counts, &loaded.sources);
             json_tail.push_str(&format!(",\"coverage\":{}", serde_json::to_string(&c)?));
         }
     }
@@ -246,11 +244,11 @@ pub fn run(a: SimArgs) -> Result<u8> {
         if !a.quiet && !a.json {
             eprint!(
                 "{}",
-                output::coverage::summary(&program, counts, &loaded.source)
+                output::coverage::summary(&program, counts, &loaded.sources)
             );
         }
         if !file.is_empty() {
-            let v = output::coverage::to_json(&program, counts, &loaded.source);
+            let v = output::coverage::to_json(&program, counts, &loaded.sources);
             write_out(
                 Some(file),
                 &format!("{}\n", serde_json::to_string_pretty(&v)?),
@@ -277,10 +275,8 @@ fn tick_of(stop: &Stop) -> u64 {
 fn describe_stop(
     stop: &Stop,
     p: &statecheck_ir::Program,
-    source: &str,
-    path: &str,
+    sources: &statecheck_model::imports::Sources,
 ) -> (&'static str, u8, String) {
-    let idx = LineIndex::new(source);
     match stop {
         Stop::Completed => ("completed", 0, "run completed".into()),
         Stop::Violation { tick, property } => (
@@ -289,10 +285,10 @@ fn describe_stop(
             format!("property `{property}` violated at tick {tick}"),
         ),
         Stop::RuntimeError { tick, error } => {
-            let at = p.sites.get(error.site as usize).map(|s| {
-                let (l, c) = idx.line_col(s.span.start);
-                format!(" at {path}:{l}:{c}")
-            });
+            let at = p
+                .sites
+                .get(error.site as usize)
+                .map(|s| format!(" at {}", sources.position(s.span)));
             (
                 "runtime_error",
                 1,

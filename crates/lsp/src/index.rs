@@ -210,7 +210,7 @@ impl Builder {
                         );
                     }
                 }
-                Item::Tick(_) => {}
+                Item::Tick(_) | Item::Import(_) => {}
             }
         }
     }
@@ -332,7 +332,7 @@ impl Builder {
                     }
                     self.expr(&c.value, &Ctx::default());
                 }
-                Item::Enum(_) | Item::Tick(_) => {}
+                Item::Enum(_) | Item::Tick(_) | Item::Import(_) => {}
                 Item::Fn(f) => {
                     let id = self.global(&f.name.name, |k| k == SymKind::Fn);
                     let cx = Ctx {

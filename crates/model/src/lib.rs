@@ -11,6 +11,7 @@ mod cascade;
 mod chart;
 mod expr;
 pub mod formula;
+pub mod imports;
 pub mod lint;
 pub mod model;
 pub mod ops;
@@ -216,7 +217,7 @@ fn collect_globals(file: &ast::File, g: &mut Globals, diags: &mut Vec<Diagnostic
                     g.fns.insert(f.name.name.clone(), (index, f.clone()));
                 }
             }
-            ast::Item::System(_) => {}
+            ast::Item::System(_) | ast::Item::Import(_) => {}
             ast::Item::Tick(t) => {
                 if let Some(prev) = tick_seen {
                     diags.push(

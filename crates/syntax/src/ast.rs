@@ -38,6 +38,22 @@ pub enum Item {
     System(System),
     /// `tick 100 ms;` — the duration of one tick, enabling `after(3 s)`.
     Tick(TickDecl),
+    /// `import "path.sc";` or `import "path.sc" { A, B };` — resolved before checking
+    /// (`statecheck_model::imports`); the checker itself ignores it.
+    Import(ImportDecl),
+}
+
+/// `import "path.sc" [ '{' IDENT { ',' IDENT } '}' ] ';'`
+#[derive(Clone, Debug, PartialEq)]
+pub struct ImportDecl {
+    /// The path as written, without the quotes.
+    pub path: String,
+    /// Where the quoted path is.
+    pub path_span: Span,
+    /// The names brought in explicitly, if a list was given.
+    pub names: Option<Vec<Ident>>,
+    /// The whole declaration.
+    pub span: Span,
 }
 
 /// `const NAME[: type] = expr;`

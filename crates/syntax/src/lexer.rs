@@ -190,6 +190,10 @@ pub enum Tok {
     Ident,
     /// An integer literal with its value (0 if it was out of range).
     Int(i64),
+    /// A double-quoted string on one line, quotes included in the span. Only produced right
+    /// after the contextual keyword `import` (the language has no other strings, so a quote
+    /// anywhere else stays the lexical error E0001).
+    Str,
     /// A keyword.
     Kw(Kw),
     /// `{`
@@ -272,7 +276,7 @@ impl Tok {
     /// How the token kind is spelled, for messages (`None` for identifiers, integers and EOF).
     pub fn spelling(self) -> Option<&'static str> {
         Some(match self {
-            Tok::Ident | Tok::Int(_) | Tok::Eof => return None,
+            Tok::Ident | Tok::Int(_) | Tok::Str | Tok::Eof => return None,
             Tok::Kw(k) => k.as_str(),
             Tok::LBrace => "{",
             Tok::RBrace => "}",
@@ -324,6 +328,7 @@ pub struct Token {
 }
 
 /// Split `source` into tokens (ending with [`Tok::Eof`]), appending lexical errors to `diags`.
+#[cfg(test)]
 pub fn lex(source: &str, diags: &mut Vec<Diagnostic>) -> Vec<Token> {
     lex_with_comments(source, diags).0
 }
@@ -331,10 +336,24 @@ pub fn lex(source: &str, diags: &mut Vec<Diagnostic>) -> Vec<Token> {
 /// [`lex`], also returning the spans of the comments (`// …` without its newline, `/* … */`)
 /// in textual order: the trivia the formatter keeps.
 pub fn lex_with_comments(source: &str, diags: &mut Vec<Diagnostic>) -> (Vec<Token>, Vec<Span>) {
+    lex_from_with_comments(source, 0, diags)
+}
+
+/// Like [`lex`], starting at byte `start` of `source` (spans stay offsets into `source`).
+pub fn lex_from(source: &str, start: usize, diags: &mut Vec<Diagnostic>) -> Vec<Token> {
+    lex_from_with_comments(source, start, diags).0
+}
+
+/// [`lex_with_comments`] from byte `start` of `source` on.
+pub fn lex_from_with_comments(
+    source: &str,
+    start: usize,
+    diags: &mut Vec<Diagnostic>,
+) -> (Vec<Token>, Vec<Span>) {
     let mut lx = Lexer {
         src: source,
         bytes: source.as_bytes(),
-        pos: 0,
+        pos: start.min(source.len()),
         toks: Vec::new(),
         comments: Vec::new(),
         diags,
@@ -418,6 +437,9 @@ impl Lexer<'_, '_> {
             } else if b.is_ascii_digit() {
                 self.flush_bad();
                 self.number();
+            } else if b == b'"' && self.after_import() {
+                self.flush_bad();
+                self.string();
             } else if b == b'#' || b == b'"' || b == b'\'' {
                 // Likely a comment or a string from another language: report it once and skip
                 // it whole, so the parser does not trip over its contents.
@@ -442,6 +464,33 @@ impl Lexer<'_, '_> {
             kind: Tok::Eof,
             span: Span::new(end, end),
         });
+    }
+
+    /// True when the previous token is the identifier `import` (a contextual keyword).
+    fn after_import(&self) -> bool {
+        self.toks
+            .last()
+            .is_some_and(|t| t.kind == Tok::Ident && &self.src[t.span.range()] == "import")
+    }
+
+    /// A `"…"` string closed on the same line; an unclosed one is reported (E0001) and kept
+    /// as a token so the parser reports no cascade.
+    fn string(&mut self) {
+        let start = self.pos;
+        self.pos += 1;
+        while self.pos < self.bytes.len() && !matches!(self.bytes[self.pos], b'"' | b'\n') {
+            self.pos += 1;
+        }
+        if self.bytes.get(self.pos) == Some(&b'"') {
+            self.pos += 1;
+        } else {
+            self.diags.push(
+                Diagnostic::error("E0001", "unterminated string", Span::new(start, self.pos))
+                    .with_label("no closing `\"` on this line")
+                    .with_hint("write the path on one line: `import \"file.sc\";`"),
+            );
+        }
+        self.push(Tok::Str, start);
     }
 
     /// Skip a `# …` comment (to end of line) or a quoted literal (to its closing quote on

@@ -26,9 +26,24 @@ pub use parser::{MAX_DEPTH, MAX_HEIGHT};
 /// Returns the syntax tree and the lexical and syntax diagnostics, sorted by position. The file is usable only if no diagnostic is an error; even then the tree
 /// contains every construct that parsed.
 pub fn parse(source: &str) -> (ast::File, Vec<Diagnostic>) {
+    parse_from(source, 0)
+}
+
+/// Parse the file that occupies `source[start..]`, with spans that stay offsets into all of
+/// `source`.
+///
+/// This is how several files share one offset space (`statecheck_model::imports` appends
+/// each imported file to one text): every span of every file's tree and diagnostics is then
+/// unique, and a renderer finds the file from the offset alone.
+pub fn parse_from(source: &str, start: usize) -> (ast::File, Vec<Diagnostic>) {
     let mut diags = Vec::new();
-    let tokens = lexer::lex(source, &mut diags);
-    let file = parser::parse_tokens(source, tokens, &mut diags);
+    let start = if source.is_char_boundary(start) {
+        start
+    } else {
+        0
+    };
+    let tokens = lexer::lex_from(source, start, &mut diags);
+    let file = parser::parse_tokens_from(source, start, tokens, &mut diags);
     diags.sort_by_key(|d| d.span.start);
     (file, diags)
 }

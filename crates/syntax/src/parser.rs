@@ -28,10 +28,12 @@
 //! | E0018 | malformed duration: missing or unknown time unit, or an amount that is not a primary expression |
 //! | E0019 | `if` expression used as an operand without parentheses |
 //! | E0020 | missing `return` in a function body |
+//! | E0021 | malformed `import`: no quoted path, or a bad name list |
 //! | E0030 | malformed CTL until: `A[`/`E[` without `U` |
 
 mod body;
 mod expr;
+mod imports;
 mod items;
 mod temporal;
 
@@ -45,10 +47,17 @@ pub const MAX_DEPTH: u32 = 256;
 /// Maximum height of an expression tree (long operator chains) before E0013 is reported.
 pub const MAX_HEIGHT: u32 = 512;
 
-/// Parse a token list (ending with [`Tok::Eof`]) into a file, appending diagnostics to `diags`.
-pub fn parse_tokens(src: &str, toks: Vec<Token>, diags: &mut Vec<Diagnostic>) -> ast::File {
+/// Parse a token list (ending with [`Tok::Eof`]) lexed from byte `base` of `src` on into a
+/// file, appending diagnostics to `diags`.
+pub fn parse_tokens_from(
+    src: &str,
+    base: usize,
+    toks: Vec<Token>,
+    diags: &mut Vec<Diagnostic>,
+) -> ast::File {
     let mut p = Parser {
         src,
+        base,
         toks,
         pos: 0,
         diags: Vec::new(),
@@ -68,6 +77,8 @@ pub(crate) type PResult<T> = Result<T, Failed>;
 
 pub(crate) struct Parser<'a> {
     src: &'a str,
+    /// Where this file's text starts in `src` (several files share one offset space).
+    base: usize,
     toks: Vec<Token>,
     pos: usize,
     diags: Vec<Diagnostic>,
@@ -187,11 +198,11 @@ impl<'a> Parser<'a> {
         self.eat(Tok::Kw(k))
     }
 
-    /// End of the previously consumed token (0 at the start).
+    /// End of the previously consumed token (the file's start at the start).
     fn prev_end(&self) -> usize {
         match self.pos.checked_sub(1).and_then(|i| self.toks.get(i)) {
             Some(t) => t.span.end as usize,
-            None => 0,
+            None => self.base,
         }
     }
 
@@ -225,6 +236,7 @@ impl<'a> Parser<'a> {
         match t.kind {
             Tok::Ident => format!("identifier `{}`", self.text(t.span)),
             Tok::Int(_) => format!("integer `{}`", self.text(t.span)),
+            Tok::Str => format!("string {}", self.text(t.span)),
             Tok::Eof => "end of file".to_string(),
             Tok::Kw(k) => format!("keyword `{}`", k.as_str()),
             other => format!("`{}`", other.spelling().unwrap_or("?")),

@@ -48,6 +48,7 @@ fn item_spans_cover_their_text() {
                 Item::Enum(e) => e.span,
                 Item::Fn(f) => f.span,
                 Item::Tick(t) => t.span,
+                Item::Import(i) => i.span,
                 Item::Chart(c) => c.span,
                 Item::System(s) => s.span,
             };

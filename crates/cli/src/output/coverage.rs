@@ -1,8 +1,8 @@
 //! Coverage reports (the Modelica paper §3.2): state entries and transition firings.
 
 use serde_json::{json, Value};
-use statecheck_base::LineIndex;
 use statecheck_ir::{CoverKind, Program};
+use statecheck_model::imports::Sources;
 
 /// Covered and total counts of one kind of item.
 pub struct Tally {
@@ -46,8 +46,7 @@ fn kind_name(k: &CoverKind) -> &'static str {
 }
 
 /// A human-readable summary with the never-covered items.
-pub fn summary(p: &Program, counts: &[u64], source: &str) -> String {
-    let idx = LineIndex::new(source);
+pub fn summary(p: &Program, counts: &[u64], sources: &Sources) -> String {
     let s = tally(p, counts, true);
     let t = tally(p, counts, false);
     let mut out = format!(
@@ -61,10 +60,16 @@ pub fn summary(p: &Program, counts: &[u64], source: &str) -> String {
     );
     for (c, n) in p.covers.iter().zip(counts) {
         if *n == 0 {
-            let (line, col) = idx.line_col(c.span.start);
+            let (file, line, col) = place(sources, c.span.start);
+            let root = sources.files.first().is_none_or(|f| f.name == file);
+            let at = if root {
+                format!("line {line}:{col}")
+            } else {
+                format!("{file}:{line}:{col}")
+            };
             let inst = &p.instances[c.instance as usize].name;
             out.push_str(&format!(
-                "  never {}: {inst}: {} (line {line}:{col})\n",
+                "  never {}: {inst}: {} ({at})\n",
                 if matches!(c.kind, CoverKind::State(_)) {
                     "entered"
                 } else {
@@ -78,8 +83,7 @@ pub fn summary(p: &Program, counts: &[u64], source: &str) -> String {
 }
 
 /// The coverage report as JSON (read back by `statecheck dot --coverage`).
-pub fn to_json(p: &Program, counts: &[u64], source: &str) -> Value {
-    let idx = LineIndex::new(source);
+pub fn to_json(p: &Program, counts: &[u64], sources: &Sources) -> Value {
     let s = tally(p, counts, true);
     let t = tally(p, counts, false);
     let items: Vec<Value> = p
@@ -88,8 +92,8 @@ pub fn to_json(p: &Program, counts: &[u64], source: &str) -> Value {
         .zip(counts)
         .enumerate()
         .map(|(id, (c, n))| {
-            let (line, col) = idx.line_col(c.span.start);
-            json!({"id": id, "instance": p.instances[c.instance as usize].name, "kind": kind_name(&c.kind), "label": c.label, "count": n, "line": line, "col": col})
+            let (file, line, col) = place(sources, c.span.start);
+            json!({"id": id, "instance": p.instances[c.instance as usize].name, "kind": kind_name(&c.kind), "label": c.label, "count": n, "file": file, "line": line, "col": col})
         })
         .collect();
     json!({
@@ -118,4 +122,15 @@ pub fn from_json(p: &Program, v: &Value) -> Result<Vec<u64>, String> {
         counts[k] = it.get("count").and_then(Value::as_u64).unwrap_or(0);
     }
     Ok(counts)
+}
+
+/// The file, 1-based line and column of a byte offset of a program's text.
+fn place(sources: &Sources, offset: u32) -> (String, usize, usize) {
+    match sources.locate(offset as usize) {
+        Some((f, at)) => {
+            let (l, c) = statecheck_base::LineIndex::new(sources.file_text(f)).line_col(at as u32);
+            (f.name.clone(), l, c)
+        }
+        None => (String::new(), 0, 0),
+    }
 }

@@ -45,6 +45,14 @@ impl Printer<'_> {
 
     fn item(&mut self, item: &Item) {
         match item {
+            Item::Import(i) => {
+                let names = i.names.as_ref().map(|ns| {
+                    let ns: Vec<&str> = ns.iter().map(|n| n.name.as_str()).collect();
+                    format!(" {{ {} }}", ns.join(", "))
+                });
+                let text = format!("import \"{}\"{};", i.path, names.unwrap_or_default());
+                self.line(i.span, &text);
+            }
             Item::Const(c) => {
                 let ty =
                     c.ty.as_ref()

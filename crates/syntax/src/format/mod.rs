@@ -66,7 +66,7 @@ impl std::error::Error for Error {}
 pub fn format(source: &str) -> Result<String, Error> {
     let mut diags = Vec::new();
     let (toks, comments) = lexer::lex_with_comments(source, &mut diags);
-    let file = crate::parser::parse_tokens(source, toks.clone(), &mut diags);
+    let file = crate::parser::parse_tokens_from(source, 0, toks.clone(), &mut diags);
     diags.retain(Diagnostic::is_error);
     if !diags.is_empty() {
         diags.sort_by_key(|d| d.span.start);

@@ -10,7 +10,8 @@ use crate::ast::{
 use crate::lexer::{Kw, Tok};
 use statecheck_base::{Diagnostic, Span};
 
-const ITEM_EXPECTED: &str = "an item (`const`, `enum`, `fn`, `chart`, `system` or `tick`)";
+const ITEM_EXPECTED: &str =
+    "an item (`import`, `const`, `enum`, `fn`, `chart`, `system` or `tick`)";
 
 impl Parser<'_> {
     /// `file = { item }`
@@ -21,6 +22,10 @@ impl Parser<'_> {
             let start = self.pos;
             match t.kind {
                 Tok::Eof => break,
+                Tok::Ident if self.text(t.span) == "import" => match self.import_decl() {
+                    Ok(item) => items.push(crate::ast::Item::Import(item)),
+                    Err(Failed) => self.recover(),
+                },
                 Tok::RBrace => {
                     let d = Diagnostic::error("E0010", "unmatched `}`", t.span)
                         .with_label("no open `{` to close");

@@ -198,6 +198,13 @@ impl Printer {
                 });
             }
             Item::Tick(t) => self.line(format!("tick {}", duration(&t.duration))),
+            Item::Import(i) => {
+                let names = i.names.as_ref().map(|ns| {
+                    let ns: Vec<&str> = ns.iter().map(|n| n.name.as_str()).collect();
+                    format!(" {{ {} }}", ns.join(", "))
+                });
+                self.line(format!("import {:?}{}", i.path, names.unwrap_or_default()))
+            }
             Item::Chart(c) => self.chart(c),
             Item::System(s) => self.system(s),
         }

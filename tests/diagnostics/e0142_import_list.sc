@@ -1,0 +1,3 @@
+// `Sensr` is not declared by sensors.sc.
+import "imports/sensors.sc" { Sensor, Sensr };
+system Main { instance s: Sensor; }

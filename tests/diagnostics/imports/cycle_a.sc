@@ -1,0 +1,2 @@
+import "cycle_b.sc";
+chart A { initial S; state S; }

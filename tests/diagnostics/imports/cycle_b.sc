@@ -1,0 +1,2 @@
+import "cycle_a.sc";
+chart B { initial S; state S; }
