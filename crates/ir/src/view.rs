@@ -15,6 +15,8 @@ pub struct StateView {
     pub active: ExprId,
     /// True for a simple (leaf) state.
     pub leaf: bool,
+    /// Its index among its chart's states (what a drawing of the chart refers to).
+    pub id: usize,
 }
 
 /// An observable instance.
@@ -60,6 +62,12 @@ impl TraceView {
         let mut events = Vec::new();
         for inst in &p.instances {
             let Some(chart) = model.charts.get(inst.chart as usize) else {
+                // Kept (without states) so that instance `i` of the view is instance `i` of
+                // the program.
+                instances.push(InstanceView {
+                    name: inst.name.clone(),
+                    states: Vec::new(),
+                });
                 continue;
             };
             let states = chart
@@ -67,10 +75,13 @@ impl TraceView {
                 .iter()
                 .enumerate()
                 .filter(|(s, node)| *s != 0 && !node.is_region)
-                .map(|(s, node)| StateView {
-                    path: node.path.clone(),
-                    active: inst.active[s],
-                    leaf: matches!(node.kind, NodeKind::Simple),
+                .filter_map(|(s, node)| {
+                    Some(StateView {
+                        path: node.path.clone(),
+                        active: *inst.active.get(s)?,
+                        leaf: matches!(node.kind, NodeKind::Simple),
+                        id: s,
+                    })
                 })
                 .collect();
             instances.push(InstanceView {
@@ -111,6 +122,16 @@ impl TraceView {
             .filter(|s| !leaves_only || s.leaf)
             .filter(|s| eval(&p.nodes, slots, s.active).is_ok_and(|v| v != 0))
             .map(|s| s.path.clone())
+            .collect()
+    }
+
+    /// Chart state indices of the active states of instance `i` in `slots` (for drawing).
+    pub fn active_ids(&self, p: &Program, i: usize, slots: &[i64]) -> Vec<usize> {
+        self.instances[i]
+            .states
+            .iter()
+            .filter(|s| eval(&p.nodes, slots, s.active).is_ok_and(|v| v != 0))
+            .map(|s| s.id)
             .collect()
     }
 

@@ -15,6 +15,5 @@ pub mod protocol;
 pub mod server;
 pub mod session;
 pub mod verify;
-pub mod views;
 
 pub use server::{spawn, Config, Error, ErrorKind, Handle};

@@ -20,7 +20,7 @@ pub struct Loaded {
     /// The lowered system.
     pub program: Program,
     /// What a tick shows (active states, values, events), computed once.
-    pub views: crate::views::Views,
+    pub views: statecheck_ir::view::TraceView,
     /// The model description for the page (`describe::describe`), serialized once.
     pub description: String,
 }
@@ -81,7 +81,7 @@ pub fn load_source(
     }
     let sys = choose(&model, system).map_err(|m| vec![plain(path, m)])?;
     let program = statecheck_ir::lower(&model, sys).map_err(|d| to_page(path, &source, &d))?;
-    let views = crate::views::Views::new(&model, &program);
+    let views = statecheck_ir::view::TraceView::new(&model, &program);
     let mut loaded = Loaded {
         path: path.to_string(),
         source,

@@ -2,10 +2,10 @@
 //! replies built from a session. Documented in docs/studio.md, "Protocol".
 
 use crate::session::{Session, TickOut};
-use crate::views::Views;
 use serde::Deserialize;
 use serde_json::{json, Map, Value};
 use statecheck_base::LineIndex;
+use statecheck_ir::view::TraceView as Views;
 use statecheck_ir::{Program, ValueKind};
 use statecheck_sim::Stop;
 
@@ -212,8 +212,8 @@ pub fn record(p: &Program, views: &Views, t: &TickOut, source: &str, path: &str)
     if let Some(slots) = &t.slots {
         let mut active = Map::new();
         let mut ids = Vec::new();
-        for (i, name) in views.instances.iter().enumerate() {
-            active.insert(name.clone(), json!(views.active(p, i, slots)));
+        for (i, inst) in views.instances.iter().enumerate() {
+            active.insert(inst.name.clone(), json!(views.active(p, i, slots, false)));
             ids.push(json!(views.active_ids(p, i, slots)));
         }
         let mut vars = Map::new();
