@@ -35,7 +35,7 @@ const CHECK_EVERY: u32 = 64;
 impl Terminator for LimitTerminator {
     fn terminated(&mut self) -> bool {
         self.calls = self.calls.wrapping_add(1);
-        if self.calls % CHECK_EVERY != 0 {
+        if !self.calls.is_multiple_of(CHECK_EVERY) {
             return false;
         }
         ACTIVE.with(|a| {

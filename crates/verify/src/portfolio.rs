@@ -11,7 +11,7 @@ use crate::circuit::SYMBOLIC_RACE;
 use crate::priority::lower_priority;
 use crate::schedule::{self, Work};
 use crate::single::{early_end_reason, meta_of};
-use crate::{Error, Event, Meta, Options, Run};
+use crate::{Error, Event, Meta, Options, Run, REASON_PROPERTY_LIMIT};
 use statecheck_explicit::{Progress, Report, Stats};
 use statecheck_ir::verdict::{PropKind, PropResult};
 use statecheck_ir::Program;
@@ -203,7 +203,8 @@ pub(crate) fn run_auto(
                     },
                 )
             });
-            if m.reason.is_none() && !r.verdict.is_definitive() {
+            // The reason is the run's end, unless this property's own budget ran out.
+            if !r.verdict.is_definitive() && m.reason.as_deref() != Some(REASON_PROPERTY_LIMIT) {
                 m.reason = Some(why.clone());
             }
             events(Event::Decided {
