@@ -1,18 +1,22 @@
-//! `statecheck verify`: exhaustive verification of a system's properties with the explicit
-//! engine; counterexamples written as scenarios and replayed through the simulator.
+//! `statecheck verify`: exhaustive verification of a system's properties with the portfolio
+//! (`statecheck-verify`); each verdict printed as it is decided, counterexamples written as
+//! scenarios and replayed through the simulator; Ctrl-C and the limits end the run with the
+//! verdicts decided so far.
 //!
 //! Exit codes: 0 every property holds (`proved`, `bounded`, or `reachable` as asked), 1 some
 //! property is `violated` or a `reachable` target is `unreachable`, 3 some verdict is `unknown`
 //! (a limit was hit), 2 usage errors.
 
 mod cex;
+mod live;
 mod report;
 mod symbolic;
+mod watch;
 
 use crate::load;
 use anyhow::{bail, Result};
 use clap::Args;
-use statecheck_explicit::{human_bytes, Backend, Options, Verdict};
+use statecheck_explicit::{Backend, Options, Verdict};
 use std::io::IsTerminal;
 use std::time::Duration;
 
@@ -22,9 +26,10 @@ pub struct VerifyArgs {
     /// The `.sc` model file, or an AIGER file (`.aag` ASCII, `.aig` binary) of a hardware model
     /// checking problem.
     model: String,
-    /// The engine: explicit-state search, or SAT-based BMC, k-induction, IC3; `auto` runs the
-    /// explicit engine, IC3, k-induction and BMC side by side (see docs/verification.md).
-    #[arg(long, value_enum, default_value = "explicit")]
+    /// The engine: `auto` (the default) runs the explicit engine, BMC, IC3 and k-induction
+    /// side by side; or explicit-state search alone, or one SAT engine: BMC, k-induction, IC3
+    /// (see docs/verification.md).
+    #[arg(long, value_enum, default_value = "auto")]
     engine: symbolic::EngineArg,
     /// Write the inductive invariant IC3 found for the (single) property to FILE.
     #[arg(long, value_name = "FILE")]
@@ -48,9 +53,14 @@ pub struct VerifyArgs {
     /// Stop with `unknown` after N states.
     #[arg(long, value_name = "N")]
     max_states: Option<u64>,
-    /// Stop with `unknown` after this many seconds.
+    /// Stop after this many seconds in total: the verdicts decided so far are kept, the rest
+    /// are `unknown` (reason "time limit").
     #[arg(long, value_name = "SECONDS")]
     timeout: Option<f64>,
+    /// The most each SAT engine spends on one property (with `auto`, `bmc`, `kind`, `ic3`);
+    /// a property that exhausts it is `unknown` (reason "property time limit").
+    #[arg(long, value_name = "SECONDS")]
+    property_timeout: Option<f64>,
     /// Worker threads (default: one per core).
     #[arg(long, value_name = "N")]
     threads: Option<usize>,
@@ -62,9 +72,13 @@ pub struct VerifyArgs {
     /// against the interpreter), or `auto` (native once a search runs longer than 0.3 s).
     #[arg(long, value_enum, default_value = "auto")]
     backend: BackendArg,
-    /// Print one JSON object.
-    #[arg(long)]
+    /// Print one JSON object at the end.
+    #[arg(long, conflicts_with = "json_lines")]
     json: bool,
+    /// Print one JSON object per line for each verdict as it is decided, then one with the
+    /// statistics.
+    #[arg(long)]
+    json_lines: bool,
     /// Print only the verdict table (no statistics, counterexample tables or progress).
     #[arg(long, short)]
     quiet: bool,
@@ -116,13 +130,8 @@ pub fn run(a: VerifyArgs) -> Result<u8> {
     if a.threads == Some(0) {
         bail!("--threads must be at least 1");
     }
-    let timeout = match a.timeout {
-        Some(t) if !(t > 0.0 && t.is_finite()) => {
-            bail!("--timeout must be a positive number of seconds")
-        }
-        Some(t) => Some(Duration::from_secs_f64(t)),
-        None => None,
-    };
+    let timeout = seconds(a.timeout, "--timeout")?;
+    let property_timeout = seconds(a.property_timeout, "--property-timeout")?;
     if a.model.ends_with(".aag") || a.model.ends_with(".aig") {
         return symbolic::run_aiger(&symbolic::AigerRun {
             path: &a.model,
@@ -157,67 +166,87 @@ pub fn run(a: VerifyArgs) -> Result<u8> {
         compiler: Some(std::sync::Arc::new(statecheck_native::CCompiler)),
         ..Options::default()
     };
-    if a.engine != symbolic::EngineArg::Explicit {
-        let vopts = statecheck_verify::Options {
-            engine: a.engine.into(),
-            check: opts.clone(),
-        };
-        let run = statecheck_verify::verify(&program, &vopts, &|_| {})?;
-        if let Some(cf) = &a.certificate {
-            symbolic::write_certificate(&run, cf)?;
-        }
-        let rep = run.report;
-        let cexs = cex::process(&loaded, &program, &rep, a.cex_dir.as_deref(), a.vcd)?;
-        if a.json {
-            let v = report::json(&program, &loaded.source, &rep, &cexs, &run.meta);
-            crate::write_out(None, &format!("{}\n", serde_json::to_string(&v)?))?;
-        } else {
-            let t = report::text(&loaded, &program, &rep, &cexs, a.quiet, &run.meta);
-            crate::write_out(None, &t)?;
-        }
-        return Ok(exit_code(&rep.results));
+    let engine: statecheck_verify::Engine = a.engine.into();
+    let explicit = engine == statecheck_verify::Engine::Explicit;
+    if explicit {
+        report::announce_branching(&program, &opts, a.json || a.json_lines || a.quiet);
     }
-    report::announce_branching(&program, &opts, a.json || a.quiet);
-    let bar = (!a.json && !a.quiet && std::io::stderr().is_terminal()).then(progress_bar);
-    let tick = |p: &statecheck_explicit::Progress| {
-        if let Some(b) = &bar {
-            let rate = p.states as f64 / p.elapsed.as_secs_f64().max(1e-9);
-            b.set_message(format!(
-                "depth {} · {} states · {:.0} states/s · {}",
-                p.depth,
-                p.states,
-                rate,
-                human_bytes(p.memory_bytes)
-            ));
-        }
+    let names: Vec<String> = statecheck_ir::verdict::select(&program, &a.properties)
+        .map(|v| v.into_iter().map(|p| p.name).collect())
+        .unwrap_or_default();
+    let format = if a.json {
+        live::Format::Json
+    } else if a.json_lines {
+        live::Format::JsonLines
+    } else {
+        live::Format::Table
     };
+    let engines: &[&'static str] = match engine {
+        statecheck_verify::Engine::Auto => &["explicit", "bmc", "ic3", "kind"],
+        e => &[e.as_str()][..],
+    };
+    let engines: Vec<&'static str> = engines.to_vec();
+    let show = format == live::Format::Table && !a.quiet && std::io::stderr().is_terminal();
+    cex::create_dir(a.cex_dir.as_deref())?;
+    let columns = report::Columns::new(names.iter().map(String::as_str), !explicit);
+    let live = live::Live::new(
+        &loaded,
+        &program,
+        names,
+        &engines,
+        columns,
+        format,
+        a.cex_dir.as_deref(),
+        a.vcd,
+        show,
+    );
+    let cancel = statecheck_verify::Cancel::new();
+    watch::on_interrupt(&cancel);
+    let _memory = max_memory.map(|m| watch::memory(&cancel, m));
     let vopts = statecheck_verify::Options {
-        engine: statecheck_verify::Engine::Explicit,
+        engine,
         check: opts,
+        property_timeout,
+        cancel: Some(cancel),
     };
-    let outcome = statecheck_verify::verify(&program, &vopts, &|e| {
-        if let statecheck_verify::Event::Progress(p) = e {
-            tick(p)
-        }
-    });
-    if let Some(b) = &bar {
-        b.finish_and_clear();
-    }
-    let rep = match outcome {
-        Ok(r) => r.report,
+    live.start();
+    let outcome = statecheck_verify::verify(&program, &vopts, &|e| live.event(e));
+    live.finish();
+    let run = match outcome {
+        Ok(r) => r,
         Err(e) => bail!("{e}"),
     };
-    let cexs = cex::process(&loaded, &program, &rep, a.cex_dir.as_deref(), a.vcd)?;
-    if a.json {
-        let v = report::json(&program, &loaded.source, &rep, &cexs, &[]);
-        crate::write_out(None, &format!("{}\n", serde_json::to_string(&v)?))?;
-    } else {
-        crate::write_out(
-            None,
-            &report::text(&loaded, &program, &rep, &cexs, a.quiet, &[]),
-        )?;
+    if let Some(cf) = &a.certificate {
+        symbolic::write_certificate(&run, cf)?;
+    }
+    let rep = &run.report;
+    let cexs = live.counterexamples(&rep.results)?;
+    match format {
+        live::Format::Json => {
+            let v = report::json(&program, &loaded.source, rep, &cexs, &run.meta);
+            crate::write_out(None, &format!("{}\n", serde_json::to_string(&v)?))?;
+        }
+        live::Format::JsonLines => {
+            let v = serde_json::json!({"stats": report::stats_json(&program, &loaded.source, &rep.stats)});
+            crate::write_out(None, &format!("{v}\n"))?;
+        }
+        live::Format::Table => {
+            let t = report::tail(&loaded, &program, rep, &cexs, a.quiet, explicit);
+            crate::write_out(None, &t)?;
+        }
     }
     Ok(exit_code(&rep.results))
+}
+
+/// A positive number of seconds.
+fn seconds(v: Option<f64>, flag: &str) -> Result<Option<Duration>> {
+    match v {
+        Some(t) if !(t > 0.0 && t.is_finite()) => {
+            bail!("{flag} must be a positive number of seconds")
+        }
+        Some(t) => Ok(Some(Duration::from_secs_f64(t))),
+        None => Ok(None),
+    }
 }
 
 /// 1 when something is violated or unreachable, else 3 when something is unknown, else 0.
@@ -232,13 +261,6 @@ fn exit_code(results: &[statecheck_explicit::PropResult]) -> u8 {
     } else {
         0
     }
-}
-
-fn progress_bar() -> indicatif::ProgressBar {
-    let b = indicatif::ProgressBar::new_spinner();
-    b.set_draw_target(indicatif::ProgressDrawTarget::stderr());
-    b.enable_steady_tick(Duration::from_millis(200));
-    b
 }
 
 /// Parse a size such as `512M`, `2G`, `1.5GiB`, `1000000` (bytes).

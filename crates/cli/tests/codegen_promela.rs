@@ -85,7 +85,15 @@ fn verify(model: &Path, system: &str) -> Value {
     let out = Command::new(env!("CARGO_BIN_EXE_statecheck"))
         .arg("verify")
         .arg(model)
-        .args(["--system", system, "--json", "--threads", "1"])
+        .args([
+            "--engine",
+            "explicit",
+            "--system",
+            system,
+            "--json",
+            "--threads",
+            "1",
+        ])
         .output()
         .expect("verify runs");
     serde_json::from_slice(&out.stdout).expect("verify JSON")

@@ -215,6 +215,8 @@ fn check_run(key: &str) {
     cmd.args([
         "verify",
         &fam(file),
+        "--engine",
+        "explicit",
         "--system",
         system,
         "--json",

@@ -52,7 +52,7 @@ fn synth_small_factory_then_verify() {
     let o = bin()
         .arg("verify")
         .arg(&out)
-        .arg("-q")
+        .args(["--engine", "explicit", "-q"])
         .output()
         .expect("runs");
     assert_eq!(

@@ -190,7 +190,7 @@ fn supervisor_passes_the_independent_check_and_its_own_properties() {
 fn verify_json(args: &[&Path]) -> Value {
     let mut all: Vec<&Path> = vec![p("verify")];
     all.extend_from_slice(args);
-    all.push(p("--json"));
+    all.extend([p("--engine"), p("explicit"), p("--json")]);
     let (_, stdout) = run(&all);
     let json = stdout
         .lines()
@@ -333,7 +333,14 @@ fn every_master_event_is_permitted_by_the_supervisor_except_the_stale_clear() {
     synth("explicit", &sup);
     // As written: the one command the supervisor refuses is requirement 4's CLEAR_NOT_CALIB.
     let c = containment(&tmp, &sup, &master(&tmp, "as_written", &[]));
-    let (code, stdout) = run(&[p("verify"), &c, p("--system"), p("Containment")]);
+    let (code, stdout) = run(&[
+        p("verify"),
+        &c,
+        p("--engine"),
+        p("explicit"),
+        p("--system"),
+        p("Containment"),
+    ]);
     assert_eq!(code, 1, "{stdout}");
     let v = verify_json(&[&c, p("--system"), p("Containment")]);
     assert_eq!(

@@ -28,6 +28,8 @@ fn verify(file: &str, system: &str, extra: &[&str], threads: &str) -> (i32, Valu
         .args([
             "verify",
             &model(file),
+            "--engine",
+            "explicit",
             "--system",
             system,
             "--json",
@@ -337,7 +339,14 @@ fn usage_errors_exit_2() {
 #[test]
 fn text_output_shows_the_counterexample_table() {
     let out = Command::new(BIN)
-        .args(["verify", &model("counter.sc"), "--system", "Counting"])
+        .args([
+            "verify",
+            &model("counter.sc"),
+            "--engine",
+            "explicit",
+            "--system",
+            "Counting",
+        ])
         .output()
         .expect("runs");
     let text = String::from_utf8_lossy(&out.stdout);

@@ -74,6 +74,10 @@ pub struct Options {
     /// What builds native successor generators; without one, the interpreter computes every
     /// successor.
     pub compiler: Option<std::sync::Arc<dyn SuccessorCompiler>>,
+    /// Raised by another thread to end the run early (Ctrl-C, another engine answered): the
+    /// search checks it between blocks and ends with [`Limit::Stopped`]; counterexamples
+    /// already found are still rebuilt.
+    pub stop: Option<std::sync::Arc<std::sync::atomic::AtomicBool>>,
 }
 
 /// How the explicit engine computes successors.
@@ -119,6 +123,7 @@ impl Default for Options {
             backend: Backend::Auto,
             native_sample: 64,
             compiler: None,
+            stop: None,
         }
     }
 }
@@ -132,6 +137,8 @@ pub enum Limit {
     States(u64),
     /// The run took longer than this.
     Time(Duration),
+    /// The caller raised [`Options::stop`].
+    Stopped,
     /// Too many input vectors per tick.
     Branching {
         /// Input vectors per tick.
@@ -148,6 +155,7 @@ impl Limit {
             Limit::Memory(_) => "memory",
             Limit::States(_) => "states",
             Limit::Time(_) => "time",
+            Limit::Stopped => "stopped",
             Limit::Branching { .. } => "branching",
         }
     }
@@ -158,6 +166,7 @@ impl Limit {
             Limit::Memory(m) => format!("memory limit of {} reached", human_bytes(*m)),
             Limit::States(n) => format!("state limit of {n} reached"),
             Limit::Time(t) => format!("time limit of {:.1} s reached", t.as_secs_f64()),
+            Limit::Stopped => "stopped on request".to_string(),
             Limit::Branching { branching, max } => format!(
                 "branching factor {branching} exceeds {max} input vectors per tick; not explored (constrain the inputs with `assume`, or use --engine ic3)"
             ),
@@ -466,6 +475,7 @@ fn run<K: Key>(
         max_memory: opts.max_memory,
         max_states: opts.max_states,
         timeout: opts.timeout,
+        stop: opts.stop.clone(),
     };
     let s = search::<K>(exp, limits, None, progress);
     stats.states = s.states;

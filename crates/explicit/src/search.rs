@@ -16,12 +16,14 @@ use statecheck_ir::Machine;
 use std::time::{Duration, Instant};
 
 /// Limits of one search.
-#[derive(Clone, Copy, Debug, Default)]
+#[derive(Clone, Debug, Default)]
 pub(crate) struct Limits {
     pub depth: Option<u64>,
     pub max_memory: Option<u64>,
     pub max_states: Option<u64>,
     pub timeout: Option<Duration>,
+    /// Raised by another thread: end with [`Limit::Stopped`] after the current block.
+    pub stop: Option<std::sync::Arc<std::sync::atomic::AtomicBool>>,
 }
 
 /// Why a search stopped.
@@ -232,7 +234,13 @@ pub(crate) fn search<K: Key>(
                     elapsed,
                 });
             }
-            let hit = if limits.max_memory.is_some_and(|m| held > m) {
+            let stopped = limits
+                .stop
+                .as_ref()
+                .is_some_and(|s| s.load(std::sync::atomic::Ordering::Relaxed));
+            let hit = if stopped {
+                Some(Limit::Stopped)
+            } else if limits.max_memory.is_some_and(|m| held > m) {
                 limits.max_memory.map(Limit::Memory)
             } else if limits.max_states.is_some_and(|m| total > m) {
                 limits.max_states.map(Limit::States)

@@ -70,14 +70,14 @@ pub fn result(l: &Loaded, index: usize, r: &PropResult, meta: &Meta) -> Value {
 /// Run the verification (blocking: call it off the async threads); `send` gets each verdict
 /// as it is decided and a final `verify_done` message.
 pub fn run(l: Arc<Loaded>, engine: Engine, timeout_s: u64, send: &(dyn Fn(Value) + Sync)) {
-    let opts = Options {
+    let opts = Options::new(
         engine,
-        check: ExplicitOptions {
+        ExplicitOptions {
             timeout: Some(Duration::from_secs(timeout_s.clamp(1, MAX_TIMEOUT_S))),
             threads: 1,
             ..ExplicitOptions::default()
         },
-    };
+    );
     let t0 = std::time::Instant::now();
     let outcome = statecheck_verify::verify(&l.program, &opts, &|e| {
         if let Event::Decided {

@@ -33,11 +33,11 @@ impl Engine {
 
     /// Run on a one-property circuit.
     pub fn run(self, aig: &crate::aig::Aig, limits: &Limits) -> Outcome {
-        match self {
+        crate::sat::with_limits(limits, || match self {
             Engine::Bmc => crate::bmc::bmc(aig, limits),
             Engine::Kind => crate::kind::kind(aig, limits),
             Engine::Ic3 => crate::ic3::ic3(aig, limits),
-        }
+        })
     }
 }
 
@@ -73,7 +73,8 @@ impl Reductions {
         if let Some(r) = g.as_ref() {
             return r.clone();
         }
-        match crate::scorr::reduce(aig, &limits.for_run()) {
+        let run = limits.for_run();
+        match crate::sat::with_limits(&run, || crate::scorr::reduce(aig, &run)) {
             Ok(r) => {
                 let useful = r.stats.merged > 0 || r.stats.latches.1 < r.stats.latches.0;
                 let r = useful.then(|| Arc::new(r));

@@ -2,7 +2,48 @@
 //! the system's C++ compiler: no libclang, no cmake) and the Tseitin encoding of AIG time frames.
 
 use crate::aig::{Aig, Lit, Node};
-use cadical_sys::{CaDiCal, Status};
+use crate::engine::Limits;
+use cadical_sys::{CaDiCal, Status, Terminator};
+use std::cell::RefCell;
+
+thread_local! {
+    /// The limits of the computation running on this thread, which every solver of the
+    /// thread obeys inside `solve` (through its terminator), so that one long SAT call cannot
+    /// overrun a deadline or ignore a stop flag.
+    static ACTIVE: RefCell<Option<Limits>> = const { RefCell::new(None) };
+}
+
+/// Run `f` with every SAT call on this thread interrupted once `limits` expire (an
+/// interrupted call answers "unknown", which the engines turn into an `unknown` verdict or a
+/// less general but sound step). Nested calls restore the outer limits on return.
+pub fn with_limits<R>(limits: &Limits, f: impl FnOnce() -> R) -> R {
+    let prev = ACTIVE.with(|a| a.replace(Some(limits.clone())));
+    let r = f();
+    ACTIVE.with(|a| *a.borrow_mut() = prev);
+    r
+}
+
+/// Asks the thread's active limits, one call in [`CHECK_EVERY`] (CaDiCaL calls it in its
+/// inner loop).
+struct LimitTerminator {
+    calls: u32,
+}
+
+/// How often the terminator reads the clock.
+const CHECK_EVERY: u32 = 64;
+
+impl Terminator for LimitTerminator {
+    fn terminated(&mut self) -> bool {
+        self.calls = self.calls.wrapping_add(1);
+        if !self.calls.is_multiple_of(CHECK_EVERY) {
+            return false;
+        }
+        ACTIVE.with(|a| {
+            a.try_borrow()
+                .is_ok_and(|l| l.as_ref().is_some_and(|l| l.expired().is_some()))
+        })
+    }
+}
 
 /// A solver literal: variable `v` (0-based) is CaDiCaL's variable `v + 1`, negative when the
 /// literal is negated.
@@ -76,7 +117,8 @@ impl Solver {
         Solver::with(c)
     }
 
-    fn with(c: CaDiCal) -> Solver {
+    fn with(mut c: CaDiCal) -> Solver {
+        c.connect_terminator(LimitTerminator { calls: 0 });
         let mut s = Solver {
             s: c,
             vars: 0,

@@ -6,12 +6,15 @@
 //! engines that lost, and reports every verdict through the caller's [`Event`] callback the
 //! moment it is decided, before the run ends.
 
+mod cancel;
 mod circuit;
 mod error;
 mod portfolio;
 mod priority;
+mod schedule;
 mod single;
 
+pub use cancel::{Cancel, CancelReason};
 pub use circuit::{decide_circuit, race};
 pub use error::{Error, ErrorKind};
 pub use statecheck_explicit::{Options as ExplicitOptions, Progress, Report, Stats};
@@ -69,9 +72,33 @@ pub struct Options {
     /// The engine.
     pub engine: Engine,
     /// Properties, limits and threads (the explicit engine's options; the SAT engines read
-    /// the properties, depth and timeout).
+    /// the properties, depth and timeout). `check.timeout` is the total for the run.
     pub check: ExplicitOptions,
+    /// The most each SAT engine spends on one property (the explicit engine explores for
+    /// all properties at once and has only the total).
+    pub property_timeout: Option<std::time::Duration>,
+    /// Raised from outside to end the run: the verdicts decided so far are kept and the rest
+    /// are `unknown` with the cancellation's reason.
+    pub cancel: Option<Cancel>,
 }
+
+impl Options {
+    /// Options for `engine` with the explicit engine's options `check` and no per-property
+    /// budget or cancellation.
+    pub fn new(engine: Engine, check: ExplicitOptions) -> Options {
+        Options {
+            engine,
+            check,
+            property_timeout: None,
+            cancel: None,
+        }
+    }
+}
+
+/// The reason given for a property left `unknown` when the run ended early.
+pub const REASON_TIME_LIMIT: &str = "time limit";
+/// The reason given for a property whose own budget (`property_timeout`) ran out.
+pub const REASON_PROPERTY_LIMIT: &str = "property time limit";
 
 /// Which engine decided a result, how long it took, and why it is `unknown`.
 #[derive(Clone, Debug, Default)]
@@ -89,6 +116,7 @@ pub struct Meta {
 
 /// Something that happened during a run, reported as it happens.
 #[derive(Debug)]
+#[non_exhaustive]
 pub enum Event<'a> {
     /// Property `index` (of the run's selection, in report order) is decided: definitive, or
     /// final for its engine.
@@ -102,6 +130,20 @@ pub enum Event<'a> {
     },
     /// The explicit engine's exploration progressed.
     Progress(&'a Progress),
+    /// A SAT engine started on property `index` with this budget.
+    Working {
+        /// `bmc`, `kind` or `ic3`.
+        engine: &'static str,
+        /// Index into the run's results.
+        index: usize,
+        /// Its budget for this attempt (`None`: until the run ends).
+        budget: Option<std::time::Duration>,
+    },
+    /// A SAT engine has nothing left to do.
+    Idle {
+        /// `bmc`, `kind` or `ic3`.
+        engine: &'static str,
+    },
 }
 
 /// The outcome of [`verify`].
@@ -124,8 +166,8 @@ pub fn verify(
     events: &(dyn Fn(Event) + Sync),
 ) -> Result<Run, Error> {
     match (opts.engine, opts.engine.symbolic()) {
-        (_, Some(e)) => single::run_engine(program, &opts.check, e, events),
-        (Engine::Auto, None) => portfolio::run_auto(program, &opts.check, events),
-        _ => single::run_explicit(program, &opts.check, events),
+        (_, Some(e)) => single::run_engine(program, opts, e, events),
+        (Engine::Auto, None) => portfolio::run_auto(program, opts, events),
+        _ => single::run_explicit(program, opts, events),
     }
 }

@@ -1,234 +1,232 @@
-//! [`Engine::Auto`](crate::Engine::Auto): the explicit engine, IC3, k-induction and BMC run
-//! side by side; each property gets the first definitive verdict and the engine that found it,
-//! reported the moment it is found.
+//! [`Engine::Auto`](crate::Engine::Auto): the explicit engine, BMC, IC3 and k-induction run
+//! side by side; each property gets the first definitive verdict and the engine that found
+//! it, reported the moment it is found.
+//!
+//! The schedule takes the cheap wins first: the explicit engine and BMC start at once, IC3 and
+//! k-induction after a head start of [`HEAD_START`] (a small model is then decided by the
+//! explicit engine alone, at its own speed); every SAT engine goes over the properties in
+//! passes with growing budgets (`schedule.rs`), so a hard property never starves the others.
 
 use crate::circuit::SYMBOLIC_RACE;
 use crate::priority::lower_priority;
-use crate::single::meta_of;
-use crate::{Error, Event, Meta, Run};
-use statecheck_explicit::{Options, Report, Stats};
+use crate::schedule::{self, Work};
+use crate::single::{early_end_reason, meta_of};
+use crate::{Error, Event, Meta, Options, Run, REASON_PROPERTY_LIMIT};
+use statecheck_explicit::{Progress, Report, Stats};
 use statecheck_ir::verdict::{PropKind, PropResult};
 use statecheck_ir::Program;
 use statecheck_symbolic::aig::Aig;
-use statecheck_symbolic::check::{decide, problems, Engine, Reductions, SymResult};
-use statecheck_symbolic::engine::{Invariant, Limits};
+use statecheck_symbolic::check::{problems, Engine, Reductions, SymResult};
+use statecheck_symbolic::engine::Invariant;
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::{mpsc, Arc};
 use std::time::{Duration, Instant};
 
-fn definitive(r: &PropResult) -> bool {
-    r.verdict.is_definitive()
-}
+/// How long the explicit engine and BMC have the cores to themselves.
+pub const HEAD_START: Duration = Duration::from_millis(300);
+
+/// How often the run checks the cancellation flag and the deadline while it waits.
+const POLL: Duration = Duration::from_millis(50);
 
 /// A definitive verdict with its metadata and, for IC3 proofs, the circuit and invariant.
 type Decided = (PropResult, Meta, Option<(Aig, Invariant)>);
 
 enum Msg {
     Explicit(Box<Result<Report, String>>, Duration),
+    Progress(Box<Progress>),
     Symbolic(usize, &'static str, Box<SymResult>),
     Done,
 }
 
-/// Per-property budgets of the passes each racing engine makes over the undecided properties
-/// (`None`: until the deadline).
-const AUTO_BUDGETS: [Option<Duration>; 3] = [
-    Some(Duration::from_secs(1)),
-    Some(Duration::from_secs(10)),
-    None,
-];
-
-/// `--engine auto`: the explicit engine, IC3, k-induction and BMC run side by side; each property gets the
-/// first definitive verdict and the engine that found it.
+/// `--engine auto`.
 pub(crate) fn run_auto(
     p: &Program,
     opts: &Options,
     events: &(dyn Fn(Event) + Sync),
 ) -> Result<Run, Error> {
-    let (bl, idx) = problems(p, &opts.properties)?;
-    let n = idx.len();
-    let cores = std::thread::available_parallelism().map_or(1, usize::from);
-    let stop = Arc::new(AtomicBool::new(false));
-    let (tx, rx) = mpsc::channel::<Msg>();
     let started = Instant::now();
+    let deadline = opts.check.timeout.map(|t| started + t);
+    let cores = std::thread::available_parallelism().map_or(1, usize::from);
+    let cancel = opts.cancel.clone().unwrap_or_default();
+    // Raised when the run ends, for whatever reason; the engines poll it.
+    let stop = Arc::new(AtomicBool::new(false));
+    let explicit_stop = Arc::new(AtomicBool::new(false));
+    let explicit_done = Arc::new(AtomicBool::new(false));
+    let (tx, rx) = mpsc::channel::<Msg>();
     {
         let tx = tx.clone();
         let p = p.clone();
-        let mut o = opts.clone();
+        let mut o = opts.check.clone();
         if o.threads == 0 {
             o.threads = cores.saturating_sub(2).max(1);
         }
-        // Detached: the explicit engine has no stop flag; the process exits without waiting.
+        o.stop = Some(Arc::clone(&explicit_stop));
+        let done = Arc::clone(&explicit_done);
+        // Detached: once stopped it may still rebuild a counterexample it found, and the run
+        // need not wait for it.
         std::thread::spawn(move || {
             // A model small enough for the explicit engine is done in moments; on a large one
             // it would take the cores from the SAT engines until the deadline.
             lower_priority();
             let t = Instant::now();
-            let r = statecheck_explicit::verify(&p, &o, None).map_err(|e| e.to_string());
+            let ptx = tx.clone();
+            let progress = move |pr: &Progress| {
+                let _ = ptx.send(Msg::Progress(Box::new(pr.clone())));
+            };
+            let r = statecheck_explicit::verify(&p, &o, Some(&progress)).map_err(|e| e.to_string());
+            done.store(true, Ordering::Relaxed);
             let _ = tx.send(Msg::Explicit(Box::new(r), t.elapsed()));
         });
     }
-    let bl = Arc::new(bl);
-    // One stop flag per property: raised when any engine decides it (the others move on to
-    // the next property) and, for all, when the run ends.
-    let flags: Arc<Vec<Arc<AtomicBool>>> =
-        Arc::new((0..n).map(|_| Arc::new(AtomicBool::new(false))).collect());
-    let deadline = opts.timeout.map(|t| started + t);
-    let reductions = Arc::new(Reductions::new(bl.props.len()));
-    let mut workers = Vec::new();
-    for engine in SYMBOLIC_RACE {
-        let tx = tx.clone();
-        let p = p.clone();
-        let bl = Arc::clone(&bl);
-        let idx = idx.clone();
-        let flags = Arc::clone(&flags);
-        let depth = opts.depth.map(|d| d as usize);
-        let stop = Arc::clone(&stop);
-        let reductions = Arc::clone(&reductions);
-        workers.push(std::thread::spawn(move || {
-            // Passes with growing budgets per property, so that one hard property does not
-            // starve the easy ones behind it; the last pass runs to the deadline.
-            // BMC deepens one unrolling and would lose it on a restart: one pass.
-            let budgets: &[Option<Duration>] = if engine == Engine::Bmc {
-                &[None]
-            } else {
-                &AUTO_BUDGETS
-            };
-            // IC3 and k-induction take the `reachable` properties last: their witnesses are
-            // BMC's to find, and a long search for one would hold up the proofs behind it.
-            let mut order: Vec<usize> = (0..idx.len()).collect();
-            if engine != Engine::Bmc {
-                order.sort_by_key(|&i| idx[i].1 == PropKind::Reachable);
-            }
-            'passes: for (pass, budget) in budgets.iter().enumerate() {
-                let last = pass + 1 == budgets.len();
-                for &i in &order {
-                    let (pi, kind) = idx[i];
-                    if flags[i].load(Ordering::Relaxed) {
-                        continue;
-                    }
-                    let until = budget.map(|b| Instant::now() + b);
-                    let lim = Limits {
-                        deadline,
-                        attempt_deadline: until,
-                        max_depth: depth,
-                        stop: Some(Arc::clone(&flags[i])),
-                    };
-                    let s = decide(&p, &bl, pi, kind, engine, &lim, &reductions);
-                    if last || definitive(&s.result) {
-                        let _ = tx.send(Msg::Symbolic(i, engine.as_str(), Box::new(s)));
-                    }
-                    if stop.load(Ordering::Relaxed) || deadline.is_some_and(|d| Instant::now() >= d)
-                    {
-                        break 'passes;
-                    }
-                }
-            }
-            let _ = tx.send(Msg::Done);
-        }));
-    }
-    drop(tx);
+    let (bl, idx) = match problems(p, &opts.check.properties) {
+        Ok(x) => x,
+        Err(e) => {
+            explicit_stop.store(true, Ordering::Relaxed);
+            return Err(e.into());
+        }
+    };
+    let n = idx.len();
+    // One flag per property: raised when any engine decides it (the others move on to the
+    // next property) and, for all, when the run ends.
+    let flags: Vec<Arc<AtomicBool>> = (0..n).map(|_| Arc::new(AtomicBool::new(false))).collect();
+    let reductions = Reductions::new(bl.props.len());
+    let depth = opts.check.depth.map(|d| d as usize);
     let mut got: Vec<Option<Decided>> = vec![None; n];
     let mut fallback: Vec<Option<(PropResult, Meta)>> = vec![None; n];
     let mut explicit_stats = None;
-    let mut done = 0;
-    let mut explicit_done = false;
-    while got.iter().any(Option::is_none) && !(done == SYMBOLIC_RACE.len() && explicit_done) {
-        let wait = opts
-            .timeout
-            .map(|t| t.saturating_sub(started.elapsed()) + Duration::from_millis(200));
-        let msg = match wait {
-            Some(w) => match rx.recv_timeout(w) {
-                Ok(m) => m,
-                Err(_) => break,
-            },
-            None => match rx.recv() {
-                Ok(m) => m,
-                Err(_) => break,
-            },
-        };
-        match msg {
-            Msg::Explicit(r, t) => {
-                explicit_done = true;
-                if let Ok(rep) = *r {
-                    for (i, r) in rep.results.iter().enumerate() {
-                        let m = Meta {
-                            engine: "explicit",
-                            time_s: Some(t.as_secs_f64()),
-                            reason: None,
-                            decided_at_s: Some(started.elapsed().as_secs_f64()),
-                        };
-                        if definitive(r) && got[i].is_none() {
-                            flags[i].store(true, Ordering::Relaxed);
-                            events(Event::Decided {
-                                index: i,
-                                result: r,
-                                meta: &m,
-                            });
-                            got[i] = Some((r.clone(), m, None));
-                        } else if fallback[i].is_none() {
-                            fallback[i] = Some((r.clone(), m));
-                        }
+    std::thread::scope(|s| {
+        for engine in SYMBOLIC_RACE {
+            let tx = tx.clone();
+            let work = Work {
+                program: p,
+                blasted: &bl,
+                idx: &idx,
+                engine,
+                deadline,
+                max_depth: depth,
+                property_timeout: opts.property_timeout,
+                flags: &flags,
+                stop: &stop,
+                reductions: &reductions,
+            };
+            let explicit_done = &explicit_done;
+            let stop = &stop;
+            let idx = &idx;
+            s.spawn(move || {
+                if engine != Engine::Bmc {
+                    while started.elapsed() < HEAD_START
+                        && !explicit_done.load(Ordering::Relaxed)
+                        && !stop.load(Ordering::Relaxed)
+                    {
+                        std::thread::sleep(Duration::from_millis(10));
                     }
-                    explicit_stats = Some(rep.stats);
                 }
-            }
-            Msg::Symbolic(i, engine, s) => {
-                let mut m = meta_of(engine, &s);
-                m.decided_at_s = Some(started.elapsed().as_secs_f64());
-                if definitive(&s.result) && got[i].is_none() {
-                    flags[i].store(true, Ordering::Relaxed);
-                    events(Event::Decided {
-                        index: i,
-                        result: &s.result,
-                        meta: &m,
-                    });
-                    got[i] = Some((s.result, m, s.invariant));
-                } else if engine == "ic3" {
-                    fallback[i] = Some((s.result, m));
+                // IC3 and k-induction take the `reachable` properties last: their witnesses
+                // are BMC's to find, and a long search for one would hold up the proofs.
+                let mut order: Vec<usize> = (0..n).collect();
+                if engine != Engine::Bmc {
+                    order.sort_by_key(|&i| idx[i].1 == PropKind::Reachable);
                 }
-            }
-            Msg::Done => done += 1,
+                schedule::run(&work, &order, events, &mut |i, r| {
+                    let _ = tx.send(Msg::Symbolic(i, engine.as_str(), Box::new(r)));
+                });
+                let _ = tx.send(Msg::Done);
+            });
         }
-    }
-    stop.store(true, Ordering::Relaxed);
-    for f in flags.iter() {
-        f.store(true, Ordering::Relaxed);
-    }
-    for w in workers {
-        let _ = w.join();
-    }
+        let mut done = 0;
+        let mut explicit_over = false;
+        let decide = |i: usize, r: PropResult, m: Meta, inv, got: &mut Vec<Option<Decided>>| {
+            flags[i].store(true, Ordering::Relaxed);
+            events(Event::Decided {
+                index: i,
+                result: &r,
+                meta: &m,
+            });
+            got[i] = Some((r, m, inv));
+        };
+        while got.iter().any(Option::is_none) && !(done == SYMBOLIC_RACE.len() && explicit_over) {
+            if cancel.reason().is_some() || deadline.is_some_and(|d| Instant::now() >= d) {
+                break;
+            }
+            let msg = match rx.recv_timeout(POLL) {
+                Ok(m) => m,
+                Err(mpsc::RecvTimeoutError::Timeout) => continue,
+                Err(mpsc::RecvTimeoutError::Disconnected) => break,
+            };
+            match msg {
+                Msg::Progress(pr) => events(Event::Progress(&pr)),
+                Msg::Explicit(r, t) => {
+                    explicit_over = true;
+                    if let Ok(rep) = *r {
+                        for (i, r) in rep.results.iter().enumerate() {
+                            let m = Meta {
+                                engine: "explicit",
+                                time_s: Some(t.as_secs_f64()),
+                                reason: None,
+                                decided_at_s: Some(started.elapsed().as_secs_f64()),
+                            };
+                            if r.verdict.is_definitive() && got[i].is_none() {
+                                decide(i, r.clone(), m, None, &mut got);
+                            } else if fallback[i].is_none() {
+                                fallback[i] = Some((r.clone(), m));
+                            }
+                        }
+                        explicit_stats = Some(rep.stats);
+                    }
+                }
+                Msg::Symbolic(i, engine, s) => {
+                    let mut m = meta_of(engine, &s);
+                    m.decided_at_s = Some(started.elapsed().as_secs_f64());
+                    if s.result.verdict.is_definitive() && got[i].is_none() {
+                        decide(i, s.result, m, s.invariant, &mut got);
+                    } else if engine == "ic3" || fallback[i].is_none() {
+                        fallback[i] = Some((s.result, m));
+                    }
+                }
+                Msg::Done => done += 1,
+            }
+        }
+        // The rows nobody decided, reported before the engines are told to stop.
+        let why = early_end_reason(opts, deadline);
+        for (i, g) in got.iter_mut().enumerate() {
+            if g.is_some() {
+                continue;
+            }
+            let (r, mut m) = fallback[i].take().unwrap_or_else(|| {
+                (
+                    PropResult::unknown(&bl.props[idx[i].0].name, idx[i].1),
+                    Meta {
+                        engine: "auto",
+                        time_s: Some(started.elapsed().as_secs_f64()),
+                        reason: None,
+                        decided_at_s: None,
+                    },
+                )
+            });
+            // The reason is the run's end, unless this property's own budget ran out.
+            if !r.verdict.is_definitive() && m.reason.as_deref() != Some(REASON_PROPERTY_LIMIT) {
+                m.reason = Some(why.clone());
+            }
+            events(Event::Decided {
+                index: i,
+                result: &r,
+                meta: &m,
+            });
+            *g = Some((r, m, None));
+        }
+        stop.store(true, Ordering::Relaxed);
+        explicit_stop.store(true, Ordering::Relaxed);
+        for f in &flags {
+            f.store(true, Ordering::Relaxed);
+        }
+    });
     let mut results = Vec::new();
     let mut meta = Vec::new();
     let mut invariants = Vec::new();
-    for (i, g) in got.into_iter().enumerate() {
-        match g {
-            Some((r, m, inv)) => {
-                results.push(r);
-                meta.push(m);
-                invariants.push(inv);
-            }
-            None => {
-                let (r, m) = fallback[i].take().unwrap_or_else(|| {
-                    (
-                        PropResult::unknown(&bl.props[idx[i].0].name, idx[i].1),
-                        Meta {
-                            engine: "auto",
-                            time_s: Some(started.elapsed().as_secs_f64()),
-                            reason: Some("no engine answered within the limits".into()),
-                            decided_at_s: None,
-                        },
-                    )
-                });
-                events(Event::Decided {
-                    index: i,
-                    result: &r,
-                    meta: &m,
-                });
-                results.push(r);
-                meta.push(m);
-                invariants.push(None);
-            }
-        }
+    for (r, m, inv) in got.into_iter().flatten() {
+        results.push(r);
+        meta.push(m);
+        invariants.push(inv);
     }
     Ok(Run {
         report: Report {

@@ -1,28 +1,15 @@
-//! One engine alone: the explicit engine, or one SAT engine deciding the properties one after
-//! the other.
+//! One engine alone: the explicit engine, or one SAT engine deciding the properties on the
+//! fair schedule (`schedule.rs`).
 
-use crate::{Error, Event, Meta, Run, DEFAULT_BMC_DEPTH};
-use statecheck_explicit::{Options, Report, Stats};
+use crate::schedule::{self, Work};
+use crate::{Error, Event, Meta, Options, Run, DEFAULT_BMC_DEPTH, REASON_TIME_LIMIT};
+use statecheck_explicit::{Limit, Report, Stats};
+use statecheck_ir::verdict::{PropResult, Verdict};
 use statecheck_ir::Program;
-use statecheck_symbolic::check::{decide, problems, Engine, Reductions, SymResult};
-use statecheck_symbolic::engine::Limits;
-use std::sync::atomic::AtomicBool;
+use statecheck_symbolic::check::{problems, Engine, Reductions, SymResult};
+use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::Arc;
-use std::time::{Duration, Instant};
-
-/// Limits of one SAT run.
-pub(crate) fn limits(
-    timeout: Option<Duration>,
-    depth: Option<u64>,
-    stop: Option<Arc<AtomicBool>>,
-) -> Limits {
-    Limits {
-        deadline: timeout.map(|t| Instant::now() + t),
-        attempt_deadline: None,
-        max_depth: depth.map(|d| d as usize),
-        stop,
-    }
-}
+use std::time::Instant;
 
 /// The metadata of a SAT engine's result.
 pub(crate) fn meta_of(engine: &'static str, s: &SymResult) -> Meta {
@@ -34,6 +21,15 @@ pub(crate) fn meta_of(engine: &'static str, s: &SymResult) -> Meta {
     }
 }
 
+/// The reason of a property left undecided when the run ended early.
+pub(crate) fn early_end_reason(opts: &Options, deadline: Option<Instant>) -> String {
+    match opts.cancel.as_ref().and_then(|c| c.reason()) {
+        Some(r) => r.as_str().to_string(),
+        None if deadline.is_some_and(|d| Instant::now() >= d) => REASON_TIME_LIMIT.to_string(),
+        None => "no engine answered within the limits".to_string(),
+    }
+}
+
 /// The explicit engine alone; its verdicts are reported when the exploration ends.
 pub(crate) fn run_explicit(
     p: &Program,
@@ -41,12 +37,22 @@ pub(crate) fn run_explicit(
     events: &(dyn Fn(Event) + Sync),
 ) -> Result<Run, Error> {
     let progress = |pr: &statecheck_explicit::Progress| events(Event::Progress(pr));
-    let report = statecheck_explicit::verify(p, opts, Some(&progress))?;
+    let mut check = opts.check.clone();
+    if let Some(c) = &opts.cancel {
+        check.stop = Some(c.flag());
+    }
+    let report = statecheck_explicit::verify(p, &check, Some(&progress))?;
+    // Stopped from outside: the rows left unknown say why.
+    let reason = match (&report.stats.limit, &opts.cancel) {
+        (Some(Limit::Stopped), Some(c)) => c.reason().map(|r| r.as_str().to_string()),
+        _ => None,
+    };
     let meta: Vec<Meta> = report
         .results
         .iter()
-        .map(|_| Meta {
+        .map(|r| Meta {
             engine: "explicit",
+            reason: reason.clone().filter(|_| r.verdict == Verdict::Unknown),
             ..Meta::default()
         })
         .collect();
@@ -65,35 +71,97 @@ pub(crate) fn run_explicit(
     })
 }
 
-/// One SAT engine on every selected property, one after the other.
+/// One SAT engine on every selected property: passes with growing budgets, each verdict
+/// reported as it is decided.
 pub(crate) fn run_engine(
     p: &Program,
     opts: &Options,
     engine: Engine,
     events: &(dyn Fn(Event) + Sync),
 ) -> Result<Run, Error> {
-    let (bl, idx) = problems(p, &opts.properties)?;
+    let started = Instant::now();
+    let deadline = opts.check.timeout.map(|t| started + t);
+    let (bl, idx) = problems(p, &opts.check.properties)?;
     // BMC never proves: without a depth it stops at DEFAULT_BMC_DEPTH ticks (`bounded`).
-    let depth = match (engine, opts.depth) {
+    let depth = match (engine, opts.check.depth) {
         (Engine::Bmc, None) => Some(DEFAULT_BMC_DEPTH),
         (_, d) => d,
     };
-    let lim = limits(opts.timeout, depth, None);
+    let n = idx.len();
+    let stop = opts
+        .cancel
+        .as_ref()
+        .map_or_else(|| Arc::new(AtomicBool::new(false)), |c| c.flag());
+    // One flag per property, raised with the run's stop flag by a watcher thread.
+    let flags: Vec<Arc<AtomicBool>> = (0..n).map(|_| Arc::new(AtomicBool::new(false))).collect();
     let reductions = Reductions::new(bl.props.len());
+    let mut got: Vec<Option<(PropResult, Meta, _)>> = vec![None; n];
+    let finished = AtomicBool::new(false);
+    std::thread::scope(|s| {
+        // Relay the cancellation and the deadline to the attempt in progress.
+        s.spawn(|| {
+            while !finished.load(Ordering::Relaxed) {
+                if stop.load(Ordering::Relaxed) || deadline.is_some_and(|d| Instant::now() >= d) {
+                    for f in &flags {
+                        f.store(true, Ordering::Relaxed);
+                    }
+                    return;
+                }
+                std::thread::sleep(std::time::Duration::from_millis(20));
+            }
+        });
+        let work = Work {
+            program: p,
+            blasted: &bl,
+            idx: &idx,
+            engine,
+            deadline,
+            max_depth: depth.map(|d| d as usize),
+            property_timeout: opts.property_timeout,
+            flags: &flags,
+            stop: &stop,
+            reductions: &reductions,
+        };
+        let order: Vec<usize> = (0..n).collect();
+        schedule::run(&work, &order, events, &mut |i, r| {
+            // An attempt cut short by the end of the run is not a verdict.
+            if stop.load(Ordering::Relaxed) && !schedule::settled(&r) {
+                return;
+            }
+            flags[i].store(true, Ordering::Relaxed);
+            let m = meta_of(engine.as_str(), &r);
+            events(Event::Decided {
+                index: i,
+                result: &r.result,
+                meta: &m,
+            });
+            got[i] = Some((r.result, m, r.invariant));
+        });
+        finished.store(true, Ordering::Relaxed);
+    });
     let mut results = Vec::new();
     let mut meta = Vec::new();
     let mut invariants = Vec::new();
-    for (i, &(pi, kind)) in idx.iter().enumerate() {
-        let s = decide(p, &bl, pi, kind, engine, &lim, &reductions);
-        let m = meta_of(engine.as_str(), &s);
-        events(Event::Decided {
-            index: i,
-            result: &s.result,
-            meta: &m,
+    for (i, g) in got.into_iter().enumerate() {
+        let (r, m, inv) = g.unwrap_or_else(|| {
+            let (pi, kind) = idx[i];
+            let r = PropResult::unknown(&bl.props[pi].name, kind);
+            let m = Meta {
+                engine: engine.as_str(),
+                time_s: Some(0.0),
+                reason: Some(early_end_reason(opts, deadline)),
+                decided_at_s: None,
+            };
+            events(Event::Decided {
+                index: i,
+                result: &r,
+                meta: &m,
+            });
+            (r, m, None)
         });
+        results.push(r);
         meta.push(m);
-        invariants.push(s.invariant.clone());
-        results.push(s.result);
+        invariants.push(inv);
     }
     Ok(Run {
         report: Report {

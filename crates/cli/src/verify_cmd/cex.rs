@@ -4,7 +4,7 @@
 use crate::load::Loaded;
 use crate::output;
 use anyhow::Result;
-use statecheck_explicit::{PropKind, Report};
+use statecheck_explicit::{PropKind, PropResult};
 use statecheck_ir::view::TraceView as Views;
 use statecheck_ir::Program;
 use statecheck_sim::{scenario, Options, ScenarioInputs, Stop, TickRecord};
@@ -22,23 +22,27 @@ pub struct Cex {
     pub mismatch: Option<String>,
 }
 
-/// Write and replay every counterexample of `rep` (index-aligned with `rep.results`).
-pub fn process(
-    loaded: &Loaded,
-    program: &Program,
-    rep: &Report,
-    dir: Option<&str>,
-    vcd: bool,
-) -> Result<Vec<Option<Cex>>> {
+/// Create the counterexample directory (before the run, so that counterexamples can be
+/// written the moment they are found).
+pub fn create_dir(dir: Option<&str>) -> Result<()> {
     if let Some(d) = dir {
         crate::outpath::create_dir(d, "--cex-dir")?;
     }
+    Ok(())
+}
+
+/// Write and replay the counterexample of one result, if it has one (the directory exists).
+pub fn one(
+    loaded: &Loaded,
+    program: &Program,
+    r: &PropResult,
+    dir: Option<&str>,
+    vcd: bool,
+) -> Result<Option<Cex>> {
     let views = Views::new(&loaded.model, program);
-    let mut out = Vec::with_capacity(rep.results.len());
-    for r in &rep.results {
+    {
         let Some(vectors) = &r.counterexample else {
-            out.push(None);
-            continue;
+            return Ok(None);
         };
         let (sc, run, broken) = match r.loop_start {
             Some(k) => {
@@ -111,14 +115,13 @@ pub fn process(
             }
             None => None,
         };
-        out.push(Some(Cex {
+        Ok(Some(Cex {
             path,
             trace: run.trace,
             tick,
             mismatch,
-        }));
+        }))
     }
-    Ok(out)
 }
 
 fn describe(stop: &Stop) -> String {

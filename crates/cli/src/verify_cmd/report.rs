@@ -6,7 +6,7 @@ use crate::load::Loaded;
 use crate::output::table;
 use serde_json::{json, Value};
 use statecheck_base::LineIndex;
-use statecheck_explicit::{human_bytes, InputSpace, Options, Report, Stats, Verdict};
+use statecheck_explicit::{human_bytes, InputSpace, Options, PropResult, Report, Stats, Verdict};
 use statecheck_ir::view::TraceView as Views;
 use statecheck_ir::{CoverKind, Program};
 use std::fmt::Write;
@@ -44,79 +44,91 @@ pub use statecheck_verify::Meta;
 
 /// The JSON object of `statecheck verify --json`.
 pub fn json(p: &Program, source: &str, rep: &Report, cexs: &[Option<Cex>], meta: &[Meta]) -> Value {
-    let s = &rep.stats;
     let results: Vec<Value> = rep
         .results
         .iter()
         .zip(cexs)
         .enumerate()
-        .map(|(i, (r, c))| {
-            let m = meta.get(i);
-            let mut o = json!({
-                "property": r.name,
-                "kind": r.kind.as_str(),
-                "verdict": r.verdict.as_str(),
-                "engine": m.map_or("explicit", |m| m.engine),
-                "depth": r.depth,
-                "states": s.states,
-                "transitions": s.transitions,
-                "time_s": m.and_then(|m| m.time_s).unwrap_or(s.time.as_secs_f64()),
-                "counterexample": c.as_ref().and_then(|c| c.path.clone()),
-            });
-            if let Some(at) = m.and_then(|m| m.decided_at_s) {
-                o["decided_at_s"] = json!(at);
-            }
-            if let Some(c) = c {
-                o["tick"] = json!(c.tick);
-                if let Some(m) = &c.mismatch {
-                    o["replay_note"] = json!(m);
-                }
-            }
-            if let Some(k) = r.loop_start {
-                o["loop_start"] = json!(k);
-            }
-            if let Some(e) = &r.error {
-                o["message"] = json!(p.describe_error(e));
-            }
-            if let Some(n) = &r.note {
-                o["note"] = json!(n);
-            }
-            if let Some(why) = m.and_then(|m| m.reason.clone()) {
-                o["reason"] = json!(why);
-            } else if r.verdict == Verdict::Unknown {
-                o["reason"] = json!(s.limit.as_ref().map_or_else(
-                    || "every other property was decided first".to_string(),
-                    |l| l.describe()
-                ));
-            }
-            o
-        })
+        .map(|(i, (r, c))| result_json(p, r, c.as_ref(), meta.get(i), &rep.stats))
         .collect();
-    let dead = s.dead.as_ref().map(|d| dead_json(p, source, d));
     json!({
         "results": results,
-        "stats": {
-            "states": s.states,
-            "transitions": s.transitions,
-            "depth": s.depth,
-            "time_s": s.time.as_secs_f64(),
-            "cex_time_s": s.cex_time.as_secs_f64(),
-            "peak_memory_bytes": s.peak_memory_bytes,
-            "peak_rss_bytes": peak_rss(),
-            "table_bytes": s.table_bytes,
-            "bytes_per_state": s.bytes_per_state(),
-            "states_per_s": s.states_per_s(),
-            "branching": num(s.branching),
-            "branching_after_assumes": s.branching_after_assumes.map(num),
-            "threads": s.threads,
-            "state_bits": s.state_bits,
-            "complete": s.complete,
-            "limit": s.limit.as_ref().map(|l| json!({"kind": l.name(), "message": l.describe()})),
-            "dead": dead,
-            "backend": s.backend,
-            "native_build_s": s.native_build_time.map(|t| t.as_secs_f64()),
-            "native_note": s.native_note,
+        "stats": stats_json(p, source, &rep.stats),
+    })
+}
+
+/// One entry of `results` (and one line of `--json-lines`).
+pub fn result_json(
+    p: &Program,
+    r: &PropResult,
+    c: Option<&Cex>,
+    m: Option<&Meta>,
+    s: &Stats,
+) -> Value {
+    let mut o = json!({
+        "property": r.name,
+        "kind": r.kind.as_str(),
+        "verdict": r.verdict.as_str(),
+        "engine": m.map_or("explicit", |m| m.engine),
+        "depth": r.depth,
+        "states": s.states,
+        "transitions": s.transitions,
+        "time_s": m.and_then(|m| m.time_s).unwrap_or(s.time.as_secs_f64()),
+        "counterexample": c.and_then(|c| c.path.clone()),
+    });
+    if let Some(at) = m.and_then(|m| m.decided_at_s) {
+        o["decided_at_s"] = json!(at);
+    }
+    if let Some(c) = c {
+        o["tick"] = json!(c.tick);
+        if let Some(m) = &c.mismatch {
+            o["replay_note"] = json!(m);
         }
+    }
+    if let Some(k) = r.loop_start {
+        o["loop_start"] = json!(k);
+    }
+    if let Some(e) = &r.error {
+        o["message"] = json!(p.describe_error(e));
+    }
+    if let Some(n) = &r.note {
+        o["note"] = json!(n);
+    }
+    if let Some(why) = m.and_then(|m| m.reason.clone()) {
+        o["reason"] = json!(why);
+    } else if r.verdict == Verdict::Unknown {
+        o["reason"] = json!(s.limit.as_ref().map_or_else(
+            || "every other property was decided first".to_string(),
+            |l| l.describe()
+        ));
+    }
+    o
+}
+
+/// The `stats` object of `--json` (and the last line of `--json-lines`).
+pub fn stats_json(p: &Program, source: &str, s: &Stats) -> Value {
+    let dead = s.dead.as_ref().map(|d| dead_json(p, source, d));
+    json!({
+        "states": s.states,
+        "transitions": s.transitions,
+        "depth": s.depth,
+        "time_s": s.time.as_secs_f64(),
+        "cex_time_s": s.cex_time.as_secs_f64(),
+        "peak_memory_bytes": s.peak_memory_bytes,
+        "peak_rss_bytes": peak_rss(),
+        "table_bytes": s.table_bytes,
+        "bytes_per_state": s.bytes_per_state(),
+        "states_per_s": s.states_per_s(),
+        "branching": num(s.branching),
+        "branching_after_assumes": s.branching_after_assumes.map(num),
+        "threads": s.threads,
+        "state_bits": s.state_bits,
+        "complete": s.complete,
+        "limit": s.limit.as_ref().map(|l| json!({"kind": l.name(), "message": l.describe()})),
+        "dead": dead,
+        "backend": s.backend,
+        "native_build_s": s.native_build_time.map(|t| t.as_secs_f64()),
+        "native_note": s.native_note,
     })
 }
 
@@ -150,78 +162,89 @@ fn peak_rss() -> Option<u64> {
         .map(|k| k * 1024)
 }
 
-/// The human-readable report.
-pub fn text(
+/// The columns of the verdict table: the explicit engine's (no engine or time) or the
+/// portfolio's.
+#[derive(Clone, Copy)]
+pub struct Columns {
+    /// Width of the property column.
+    pub width: usize,
+    /// With engine and time columns.
+    pub engines: bool,
+}
+
+impl Columns {
+    /// Columns for these property names.
+    pub fn new<'a>(names: impl Iterator<Item = &'a str>, engines: bool) -> Columns {
+        let width = names.map(str::len).max().unwrap_or(8).max(8);
+        Columns { width, engines }
+    }
+
+    /// The header line.
+    pub fn header(&self) -> String {
+        let w = self.width;
+        if self.engines {
+            format!(
+                "{:<w$}  {:<9}  {:<11}  {:<8}  {:>5}  time\n",
+                "property", "kind", "verdict", "engine", "depth"
+            )
+        } else {
+            format!(
+                "{:<w$}  {:<9}  {:<11}  depth\n",
+                "property", "kind", "verdict"
+            )
+        }
+    }
+
+    /// The row of one result.
+    pub fn row(&self, r: &PropResult, m: &Meta) -> String {
+        let w = self.width;
+        if self.engines {
+            format!(
+                "{:<w$}  {:<9}  {:<11}  {:<8}  {:>5}  {:.3} s{}\n",
+                r.name,
+                r.kind.as_str(),
+                r.verdict.as_str(),
+                m.engine,
+                r.depth,
+                m.time_s.unwrap_or(0.0),
+                m.reason
+                    .as_ref()
+                    .map(|x| format!("  ({x})"))
+                    .unwrap_or_default()
+            )
+        } else {
+            format!(
+                "{:<w$}  {:<9}  {:<11}  {}{}\n",
+                r.name,
+                r.kind.as_str(),
+                r.verdict.as_str(),
+                r.depth,
+                m.reason
+                    .as_ref()
+                    .map(|x| format!("  ({x})"))
+                    .unwrap_or_default()
+            )
+        }
+    }
+}
+
+/// What follows the verdict table in the human-readable report: statistics, dead design
+/// and counterexample tables (nothing under `--quiet`). `explicit`: the explicit engine ran
+/// alone (its statistics are shown).
+pub fn tail(
     loaded: &Loaded,
     p: &Program,
     rep: &Report,
     cexs: &[Option<Cex>],
     quiet: bool,
-    meta: &[Meta],
+    explicit: bool,
 ) -> String {
     let mut out = String::new();
-    if !meta.is_empty() {
-        return symbolic_text(loaded, p, rep, cexs, quiet, meta);
-    }
-    let w = rep
-        .results
-        .iter()
-        .map(|r| r.name.len())
-        .max()
-        .unwrap_or(8)
-        .max(8);
-    let _ = writeln!(
-        out,
-        "{:<w$}  {:<9}  {:<11}  depth",
-        "property", "kind", "verdict"
-    );
-    for r in &rep.results {
-        let _ = writeln!(
-            out,
-            "{:<w$}  {:<9}  {:<11}  {}",
-            r.name,
-            r.kind.as_str(),
-            r.verdict.as_str(),
-            r.depth
-        );
-    }
     if quiet {
         return out;
     }
-    let s = &rep.stats;
-    out.push('\n');
-    out.push_str(&stats_line(s));
-    if let Some(l) = &s.limit {
-        let _ = writeln!(
-            out,
-            "stopped: {} (the statistics are partial)",
-            l.describe()
-        );
-    }
-    if s.all_decided {
-        let _ = writeln!(
-            out,
-            "stopped early: every property was decided (the statistics are partial)"
-        );
-    }
-    if let Some(dead) = &s.dead {
-        let idx = LineIndex::new(&loaded.source);
-        for &c in dead {
-            let Some(c) = p.covers.get(c as usize) else {
-                continue;
-            };
-            let (line, col) = idx.line_col(c.span.start);
-            let what = if matches!(c.kind, CoverKind::State(_)) {
-                "state never entered"
-            } else {
-                "transition never fires"
-            };
-            let _ = writeln!(
-                out,
-                "warning: dead design: {what}: {}: {} ({}:{line}:{col})",
-                p.instances[c.instance as usize].name, c.label, loaded.path
-            );
-        }
+    if explicit {
+        explicit_stats(&mut out, loaded, p, &rep.stats);
     }
     let views = Views::new(&loaded.model, p);
     for (r, c) in rep.results.iter().zip(cexs) {
@@ -257,14 +280,52 @@ pub fn text(
                     let _ = writeln!(out, "note: {m}");
                 }
             }
-            None => {
+            None if explicit => {
                 if let Some(n) = &r.note {
                     let _ = writeln!(out, "\n{what} for `{}`: {n}", r.name);
                 }
             }
+            None => {}
         }
     }
     out
+}
+
+fn explicit_stats(out: &mut String, loaded: &Loaded, p: &Program, s: &Stats) {
+    out.push('\n');
+    out.push_str(&stats_line(s));
+    if let Some(l) = &s.limit {
+        let _ = writeln!(
+            out,
+            "stopped: {} (the statistics are partial)",
+            l.describe()
+        );
+    }
+    if s.all_decided {
+        let _ = writeln!(
+            out,
+            "stopped early: every property was decided (the statistics are partial)"
+        );
+    }
+    if let Some(dead) = &s.dead {
+        let idx = LineIndex::new(&loaded.source);
+        for &c in dead {
+            let Some(c) = p.covers.get(c as usize) else {
+                continue;
+            };
+            let (line, col) = idx.line_col(c.span.start);
+            let what = if matches!(c.kind, CoverKind::State(_)) {
+                "state never entered"
+            } else {
+                "transition never fires"
+            };
+            let _ = writeln!(
+                out,
+                "warning: dead design: {what}: {}: {} ({}:{line}:{col})",
+                p.instances[c.instance as usize].name, c.label, loaded.path
+            );
+        }
+    }
 }
 
 fn stats_line(s: &Stats) -> String {
@@ -290,82 +351,4 @@ fn stats_line(s: &Stats) -> String {
         s.state_bits,
         s.branching,
     )
-}
-
-/// The text report of a run of the symbolic engines (one engine and time per property).
-fn symbolic_text(
-    loaded: &Loaded,
-    p: &Program,
-    rep: &Report,
-    cexs: &[Option<Cex>],
-    quiet: bool,
-    meta: &[Meta],
-) -> String {
-    let mut out = String::new();
-    let w = rep
-        .results
-        .iter()
-        .map(|r| r.name.len())
-        .max()
-        .unwrap_or(8)
-        .max(8);
-    let _ = writeln!(
-        out,
-        "{:<w$}  {:<9}  {:<11}  {:<8}  {:>5}  time",
-        "property", "kind", "verdict", "engine", "depth"
-    );
-    for (r, m) in rep.results.iter().zip(meta) {
-        let _ = writeln!(
-            out,
-            "{:<w$}  {:<9}  {:<11}  {:<8}  {:>5}  {:.3} s{}",
-            r.name,
-            r.kind.as_str(),
-            r.verdict.as_str(),
-            m.engine,
-            r.depth,
-            m.time_s.unwrap_or(0.0),
-            m.reason
-                .as_ref()
-                .map(|x| format!("  ({x})"))
-                .unwrap_or_default()
-        );
-    }
-    if quiet {
-        return out;
-    }
-    let views = Views::new(&loaded.model, p);
-    for (r, c) in rep.results.iter().zip(cexs) {
-        let Some(c) = c else { continue };
-        let what = if r.verdict == Verdict::Reachable {
-            "witness"
-        } else {
-            "counterexample"
-        };
-        let at = c
-            .path
-            .as_ref()
-            .map(|f| format!(": {f}"))
-            .unwrap_or_default();
-        let _ = writeln!(
-            out,
-            "\n{what} for `{}` ({}, {} ticks, decided at tick {}){at}",
-            r.name,
-            r.kind.as_str(),
-            r.depth,
-            c.tick
-        );
-        out.push_str(&table::render(p, &views, &c.trace));
-        if let Some(e) = &r.error {
-            let _ = writeln!(
-                out,
-                "{:>4}  run-time error: {}",
-                c.tick,
-                p.describe_error(e)
-            );
-        }
-        if let Some(m) = &c.mismatch {
-            let _ = writeln!(out, "note: {m}");
-        }
-    }
-    out
 }

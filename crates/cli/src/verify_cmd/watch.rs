@@ -1,0 +1,70 @@
+//! What ends a run from outside: Ctrl-C (SIGINT) and the memory watchdog. Both raise the
+//! portfolio's cancellation flag; the engines stop cooperatively and the run ends with the
+//! verdicts decided so far.
+
+use statecheck_verify::{Cancel, CancelReason};
+use std::sync::atomic::{AtomicBool, Ordering};
+use std::sync::Arc;
+use std::time::Duration;
+
+/// The first SIGINT cancels the run (the decided rows are kept, exit 3); a second one ends
+/// the process at once with exit 3.
+pub fn on_interrupt(cancel: &Cancel) {
+    let cancel = cancel.clone();
+    // A handler already installed (a second run in one process) keeps the first one.
+    let _ = ctrlc::set_handler(move || {
+        if cancel.reason().is_some() {
+            std::process::exit(3);
+        }
+        cancel.raise(CancelReason::Interrupted);
+    });
+}
+
+/// The share of `--max-memory` at which the watchdog stops the run: the engines finish the
+/// unit of work in hand after the flag is raised, and the peak must stay within the limit
+/// plus 10 %.
+const TRIGGER: f64 = 0.92;
+
+/// How often the watchdog reads the resident set size.
+const PERIOD: Duration = Duration::from_millis(5);
+
+/// Stops the watchdog when dropped.
+pub struct Watchdog(Arc<AtomicBool>);
+
+impl Drop for Watchdog {
+    fn drop(&mut self) {
+        self.0.store(true, Ordering::Relaxed);
+    }
+}
+
+/// Watch this process's resident set size and cancel the run (reason "memory limit") when it
+/// passes [`TRIGGER`] × `limit` bytes. Where the size cannot be read (not Linux), the
+/// engines' own estimates are the only limit.
+pub fn memory(cancel: &Cancel, limit: u64) -> Watchdog {
+    let done = Arc::new(AtomicBool::new(false));
+    let d = Arc::clone(&done);
+    let cancel = cancel.clone();
+    let trigger = (limit as f64 * TRIGGER) as u64;
+    std::thread::spawn(move || {
+        while !d.load(Ordering::Relaxed) {
+            match rss() {
+                Some(r) if r > trigger => {
+                    cancel.raise(CancelReason::Memory);
+                    return;
+                }
+                Some(_) => {}
+                None => return,
+            }
+            std::thread::sleep(PERIOD);
+        }
+    });
+    Watchdog(done)
+}
+
+/// The resident set size of this process in bytes (Linux).
+pub fn rss() -> Option<u64> {
+    let status = std::fs::read_to_string("/proc/self/status").ok()?;
+    let line = status.lines().find(|l| l.starts_with("VmRSS:"))?;
+    let kib: u64 = line.split_whitespace().nth(1)?.parse().ok()?;
+    Some(kib * 1024)
+}
