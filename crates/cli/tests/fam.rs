@@ -215,8 +215,6 @@ fn check_run(key: &str) {
     cmd.args([
         "verify",
         &fam(file),
-        "--engine",
-        "explicit",
         "--system",
         system,
         "--json",
@@ -227,9 +225,10 @@ fn check_run(key: &str) {
         cmd.args(["--depth", &depth.to_string()]);
     }
     let engine = run["engine"].as_str();
-    if let Some(e) = engine {
-        cmd.args(["--engine", e, "--timeout", "120"]);
-    }
+    match engine {
+        Some(e) => cmd.args(["--engine", e, "--timeout", "120"]),
+        None => cmd.args(["--engine", "explicit"]),
+    };
     if let Some(props) = run["properties"].as_array() {
         for p in props {
             cmd.args(["--property", p.as_str().expect("name")]);

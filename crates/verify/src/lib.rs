@@ -165,9 +165,14 @@ pub fn verify(
     opts: &Options,
     events: &(dyn Fn(Event) + Sync),
 ) -> Result<Run, Error> {
+    // Only the explicit engine decides temporal properties (`ltl`, `ctl`, `nonblocking`,
+    // unbounded `respond`, `deadlock_free`): on a system that has them, `auto` is the explicit
+    // engine alone, so that every property gets its verdict.
+    let (temporal, _) = statecheck_explicit::ltl::split(program, &opts.check.properties);
+    let temporal = !program.temporal.is_empty() || !temporal.is_empty();
     match (opts.engine, opts.engine.symbolic()) {
         (_, Some(e)) => single::run_engine(program, opts, e, events),
-        (Engine::Auto, None) => portfolio::run_auto(program, opts, events),
+        (Engine::Auto, None) if !temporal => portfolio::run_auto(program, opts, events),
         _ => single::run_explicit(program, opts, events),
     }
 }

@@ -158,7 +158,9 @@ pub(crate) fn run_auto(
                 Msg::Explicit(r, t) => {
                     explicit_over = true;
                     if let Ok(rep) = *r {
-                        for (i, r) in rep.results.iter().enumerate() {
+                        // Only the rows of this run's selection (temporal rows never come:
+                        // `verify` gives systems with temporal properties to explicit alone).
+                        for (i, r) in rep.results.iter().enumerate().take(got.len()) {
                             let m = Meta {
                                 engine: "explicit",
                                 time_s: Some(t.as_secs_f64()),
