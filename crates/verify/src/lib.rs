@@ -170,9 +170,26 @@ pub fn verify(
     // engine alone, so that every property gets its verdict.
     let (temporal, _) = statecheck_explicit::ltl::split(program, &opts.check.properties);
     let temporal = !program.temporal.is_empty() || !temporal.is_empty();
-    match (opts.engine, opts.engine.symbolic()) {
+    let mut run = match (opts.engine, opts.engine.symbolic()) {
         (_, Some(e)) => single::run_engine(program, opts, e, events),
         (Engine::Auto, None) if !temporal => portfolio::run_auto(program, opts, events),
         _ => single::run_explicit(program, opts, events),
+    }?;
+    // A run the memory watchdog stopped hit the memory limit, whatever engine noticed first.
+    let by_memory = opts
+        .cancel
+        .as_ref()
+        .is_some_and(|c| c.reason() == Some(CancelReason::Memory));
+    if by_memory {
+        if let Some(max) = opts.check.max_memory {
+            let stats = &mut run.report.stats;
+            if matches!(
+                stats.limit,
+                None | Some(statecheck_explicit::Limit::Stopped)
+            ) {
+                stats.limit = Some(statecheck_explicit::Limit::Memory(max));
+            }
+        }
     }
+    Ok(run)
 }
