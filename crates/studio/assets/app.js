@@ -70,7 +70,7 @@ function showDiagnostics(list) {
 
 function escapeHtml(s) { return String(s).replace(/&/g, '&amp;').replace(/</g, '&lt;').replace(/>/g, '&gt;'); }
 
-async function setModel(model) {
+function setModel(model) {
   studio.ready = false;
   $('#diag').hidden = true;
   studio.model = model;
@@ -82,10 +82,11 @@ async function setModel(model) {
   buildPresets();
   buildControls();
   defaultSelection();
-  const t0 = performance.now();
-  await buildCharts();
-  studio.layoutMs = performance.now() - t0;
+  studio.layoutStart = performance.now();
+  buildCharts();
+  if (studio.laidOut) { studio.layoutMs = 0; performance.mark('studio-laid-out'); }
   render();
+  studio.painted = false;
   studio.ready = true;
 }
 
@@ -214,26 +215,52 @@ function applyPreset(p, fault) {
 }
 
 // ---------------------------------------------------------------- charts
-async function buildCharts() {
+// Layouts are computed by ELK in a worker (layout-worker.js), once per chart (instances share
+// it), and kept in the browser's storage keyed by a hash of the chart's description. Until a
+// chart's layout arrives its cards show the provisional drawing of `Chart.quick`, already
+// highlighted and animated, so the page is interactive at once.
+let worker = null, workerSeq = 0;
+const workerWaiting = new Map();
+function layoutInWorker(chart) {
+  if (!worker) {
+    worker = new Worker('/layout-worker.js');
+    worker.onmessage = e => {
+      const w = workerWaiting.get(e.data.id);
+      workerWaiting.delete(e.data.id);
+      if (w) { if (e.data.error) w.reject(new Error(e.data.error)); else w.resolve(e.data.svg); }
+    };
+    worker.onerror = e => {
+      for (const w of workerWaiting.values()) w.reject(new Error(e.message || 'layout worker failed'));
+      workerWaiting.clear();
+      worker = null;
+    };
+  }
+  const id = ++workerSeq;
+  return new Promise((resolve, reject) => {
+    workerWaiting.set(id, {resolve, reject});
+    worker.postMessage({id, chart});
+  });
+}
+
+let generation = 0;
+function buildCharts() {
   const box = $('#charts');
   box.innerHTML = '';
   const m = studio.model;
-  const svgText = {};
-  // Each chart is laid out once (instances share it) and the drawing is kept in the
-  // browser's storage, keyed by the chart's description, so a reload draws at once.
+  const gen = ++generation;
+  const svgText = {}, pending = [];
   for (const inst of m.instances) {
     if (inst.chart in svgText) continue;
-    const desc = JSON.stringify(m.charts[inst.chart]);
-    const key = 'statecheck-layout-v1:' + hash(desc);
+    const key = 'statecheck-layout-v1:' + hash(JSON.stringify(m.charts[inst.chart]));
     let svg = null;
     try { svg = localStorage.getItem(key); } catch (e) { svg = null; }
     if (!svg) {
-      svg = await Chart.layout(m.charts[inst.chart]);
-      try { localStorage.setItem(key, svg); } catch (e) { /* storage full or disabled */ }
+      svg = Chart.quick(m.charts[inst.chart]);
+      pending.push({chart: inst.chart, key});
     }
     svgText[inst.chart] = svg;
   }
-  studio.svgs = m.instances.map((inst, k) => {
+  studio.svgs = m.instances.map(inst => {
     const card = document.createElement('div');
     card.className = 'card';
     card.dataset.instance = inst.name;
@@ -244,6 +271,36 @@ async function buildCharts() {
   // Many instances side by side: start smaller (master + 5 FAMs has 19 instances).
   $('#zoom').value = m.instances.length > 8 ? '0.5' : '1';
   zoom();
+  studio.laidOut = !pending.length;
+  if (!pending.length) return;
+  // Visible charts first (the cards are in instance order).
+  let left = pending.length;
+  for (const {chart, key} of pending) {
+    layoutInWorker(m.charts[chart]).then(svg => {
+      try { localStorage.setItem(key, svg); } catch (e) { /* storage full or disabled */ }
+      if (gen !== generation) return;
+      m.instances.forEach((inst, k) => {
+        if (inst.chart !== chart) return;
+        const old = studio.svgs[k];
+        const holder = document.createElement('div');
+        holder.innerHTML = svg;
+        const fresh = holder.firstChild;
+        old.replaceWith(fresh);
+        studio.svgs[k] = fresh;
+      });
+      zoom();
+      render();
+    }).catch(e => {
+      if (gen === generation) toast(`layout of ${m.charts[chart].name} failed (${e.message}); the provisional drawing stays`, true);
+    }).finally(() => {
+      if (gen !== generation) return;
+      if (--left === 0) {
+        studio.laidOut = true;
+        studio.layoutMs = performance.now() - studio.layoutStart;
+        performance.mark('studio-laid-out');
+      }
+    });
+  }
 }
 
 // A 53-bit string hash (cyrb53), for layout cache keys.
@@ -278,6 +335,7 @@ function applyState(m) {
   studio.cursor = studio.records.length - 1;
   syncControls();
   render();
+  if (!studio.painted) { studio.painted = true; performance.mark('studio-interactive'); }
 }
 
 function shown() {

@@ -46,10 +46,11 @@ function sim(model, system, scn) {
   return JSON.parse(out.toString());
 }
 
+// Open the page; wait until it is interactive and every chart has its final (ELK) layout.
 async function open(page, url) {
   const t0 = Date.now();
   await page.goto(url);
-  await page.waitForFunction(() => window.studio && window.studio.ready && window.studio.run, null, {timeout: 30000});
+  await page.waitForFunction(() => window.studio && window.studio.ready && window.studio.run && window.studio.laidOut, null, {timeout: 60000});
   return Date.now() - t0;
 }
 

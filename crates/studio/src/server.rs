@@ -57,6 +57,10 @@ fn router(app: Arc<App>) -> Router {
             get(|h: HeaderMap, s: State<Arc<App>>| asset(h, s, "wave.js")),
         )
         .route(
+            "/layout-worker.js",
+            get(|h: HeaderMap, s: State<Arc<App>>| asset(h, s, "layout-worker.js")),
+        )
+        .route(
             "/style.css",
             get(|h: HeaderMap, s: State<Arc<App>>| asset(h, s, "style.css")),
         )
