@@ -368,6 +368,12 @@ function renderStatus() {
   if (studio.cursor < studio.records.length - 1) s += ` · viewing tick ${studio.cursor}`;
   if (run.future) s += ` · ${run.future} to redo`;
   if (run.stop) s += ` · <span class="stop">${escapeHtml(run.stop.message)}</span>`;
+  const l = run.lasso;
+  if (l) {
+    s += l.broken ? ` · <span class="stop">not a lasso of this model</span>`
+      : ` · <span class="lasso">loop ${l.start}–${l.end - 1}${l.following ? ' (Step goes around it)' : ', left'}</span>`;
+    if (l.violated) s += ` · <span class="stop">${escapeHtml(l.violated.message)} (on the infinite run)</span>`;
+  }
   $('#status').innerHTML = s;
   $('#forward').disabled = !run.future;
   $('#back').disabled = t === 0;
@@ -402,6 +408,12 @@ function renderMessages() {
   const run = studio.run;
   const items = [];
   if (run && run.stop) items.push(`<div class="msg" data-t="${run.stop.tick}">${escapeHtml(run.stop.message)}</div>`);
+  const l = run && run.lasso;
+  if (l) {
+    if (l.violated) items.push(`<div class="msg lassov" data-t="${l.violated.tick}">${escapeHtml(l.violated.message)}: the ticks 0–${l.end - 1}, then ${l.start}–${l.end - 1} forever</div>`);
+    if (l.broken) items.push(`<div class="msg" data-t="${l.end - 1}">${escapeHtml(l.broken)}</div>`);
+    else items.push(`<div class="msg info lassostart" data-t="${l.start}">↻ the loop starts at tick ${l.start}${l.fair ? '' : ' (not fair: temporal properties not evaluated)'}</div>`);
+  }
   if (studio.lastLoaded) items.push(`<div class="msg info">replaying ${escapeHtml(studio.lastLoaded)}</div>`);
   box.innerHTML = items.join('');
   for (const d of box.querySelectorAll('.msg[data-t]')) d.onclick = () => { setCursor(+d.dataset.t); };
@@ -475,7 +487,7 @@ let waveGeom = null;
 function renderSignals() {
   const m = studio.model;
   if (studio.tab === 'wave') {
-    waveGeom = Wave.draw($('#wave'), m, studio.records, studio.selection, studio.cursor);
+    waveGeom = Wave.draw($('#wave'), m, studio.records, studio.selection, studio.cursor, studio.run && studio.run.lasso);
   } else {
     Wave.drawMsc($('#msc'), m, studio.records, studio.cursor, t => setCursor(t));
   }

@@ -214,6 +214,53 @@ async function verifyInPage(browser) {
   await page.close();
 }
 
+// A lasso from the page: verify a temporal property, replay its counterexample (prefix and
+// loop, the loop's start marked), step past the end around the loop. tests/verify/temporal.sc
+// system Free (by hand in its comments): `reaches3: F c.n == 3` is violated by a lasso on
+// which n never reaches 3. Independent checks: sim --json of the same scenario gives the same
+// ticks and message, and after the end the run repeats the loop (the lasso's definition:
+// the state after tick end-1+j is the state after tick start-1+j).
+async function lassoInPage(browser) {
+  const model = 'tests/verify/temporal.sc', system = 'Free';
+  const url = await serve(model, system);
+  const page = await browser.newPage({viewport: {width: 1500, height: 900}, acceptDownloads: true});
+  await open(page, url);
+  await page.selectOption('#engine', 'explicit');
+  await page.click('#verify');
+  await page.waitForFunction(() => /done/.test(document.querySelector('#vstate').textContent), null, {timeout: 120000});
+  const v = await page.evaluate(() => window.studio.verdicts.reaches3);
+  assert.strictEqual(v.verdict, 'violated');
+  assert.ok(/\nloop:\n/.test(v.scenario), v.scenario);
+  const file = path.join(TMP, 'lasso.scn');
+  fs.writeFileSync(file, v.scenario);
+  const ref = sim(model, system, file);
+  assert.strictEqual(ref.result.status, 'violated');
+  await page.click('#rlist .res[data-name="reaches3"]');
+  await page.waitForFunction(n => window.studio.run.lasso && window.studio.run.ticks === n, ref.ticks.length);
+  const lasso = await page.evaluate(() => window.studio.run.lasso);
+  assert.strictEqual(lasso.end, ref.ticks.length);
+  // The ticks written before the `loop:` line (a line `… * N` stands for N ticks).
+  const before = v.scenario.split('\nloop:\n')[0].split('\n').map(l => l.replace(/#.*/, '').trim()).filter(l => l);
+  const k = before.reduce((a, l) => a + (/\*\s*(\d+)$/.test(l) ? +l.match(/\*\s*(\d+)$/)[1] : 1), 0);
+  assert.strictEqual(lasso.start, k, 'loop start: ' + v.scenario);
+  assert.strictEqual(lasso.violated.message, ref.result.message);
+  const recs = await page.evaluate(() => window.studio.records);
+  recs.forEach((r, k) => { for (const key of ['active', 'vars', 'events']) assert.deepStrictEqual(r[key], ref.ticks[k][key], `tick ${k} ${key}`); });
+  assert.strictEqual(await page.$eval('#messages .lassostart', d => +d.dataset.t), lasso.start, 'the loop start is marked');
+  assert.ok((await page.textContent('#status')).includes(`loop ${lasso.start}–${lasso.end - 1}`));
+  await page.screenshot({path: path.join(SHOTS, 'lasso.png')});
+  // Around the loop, twice.
+  const period = lasso.end - lasso.start;
+  await stepN(page, 2 * period);
+  const all = await page.evaluate(() => window.studio.records);
+  for (let j = 0; j < 2 * period; j++) {
+    const a = all[lasso.end + j], b = all[lasso.start + (j % period)];
+    assert.deepStrictEqual([a.active, a.vars], [b.active, b.vars], `tick ${lasso.end + j} repeats tick ${lasso.start + (j % period)}`);
+  }
+  await checkAgainstSim(page, model, system, 'lasso-around.scn');
+  await page.close();
+}
+
 async function fam5(browser) {
   const model = 'examples/fam/fam_system5.sc';
   const url = await serve(model);
@@ -253,7 +300,9 @@ async function linearDrive(browser) {
   fs.mkdirSync(SHOTS, {recursive: true});
   const browser = await chromium.launch({executablePath: CHROMIUM, args: ['--no-sandbox', '--disable-gpu']});
   let failed = false;
-  for (const [name, t] of [['fam closed loop', famClosedLoop], ['counterexample', counterexample], ['verify in the page', verifyInPage], ['fam_system5', fam5], ['linear drive', linearDrive]]) {
+  const only = process.env.STUDIO_E2E_ONLY;
+  for (const [name, t] of [['fam closed loop', famClosedLoop], ['counterexample', counterexample], ['verify in the page', verifyInPage], ['lasso', lassoInPage], ['fam_system5', fam5], ['linear drive', linearDrive]]) {
+    if (only && !name.includes(only)) continue;
     try { await t(browser); console.log(`ok   ${name}`); } catch (e) { failed = true; console.log(`FAIL ${name}: ${e.stack || e}`); }
   }
   await browser.close();
