@@ -11,8 +11,14 @@ let ws, nextId = 1;
 const waiting = new Map();
 let running = false, busy = false;
 
+// The session's resume key lives in this tab's sessionStorage: a reload presents it and the
+// server resumes the run (it keeps a closed page's session for a while, see docs/studio.md).
+const RESUME = 'statecheck-resume';
 function connect() {
-  ws = new WebSocket(`${location.protocol === 'https:' ? 'wss' : 'ws'}://${location.host}/ws?token=${encodeURIComponent(token)}`);
+  let resume = '';
+  try { resume = sessionStorage.getItem(RESUME) || ''; } catch (e) { resume = ''; }
+  ws = new WebSocket(`${location.protocol === 'https:' ? 'wss' : 'ws'}://${location.host}/ws?token=${encodeURIComponent(token)}` +
+    (resume ? `&resume=${encodeURIComponent(resume)}` : ''));
   ws.onmessage = ev => receive(JSON.parse(ev.data));
   ws.onclose = () => { toast('connection closed — reload the page', true); setRunning(false); };
 }
@@ -26,6 +32,7 @@ function send(req) {
 studio.send = send;
 
 function receive(m) {
+  if (m.resume) { try { sessionStorage.setItem(RESUME, m.resume); } catch (e) { /* storage disabled */ } }
   if (m.type === 'model') {
     if (m.session !== undefined) setModel(m.model);
   } else if (m.type === 'diagnostics') {

@@ -480,6 +480,51 @@ impl Session {
         Ok(out)
     }
 
+    /// A session on `loaded` with this session's inputs so far re-applied (its saved scenario
+    /// replayed, so the run is the one `statecheck sim` gives for them on `loaded`), and the
+    /// records of the ticks re-run. On the same model the held inputs are kept too. When the
+    /// inputs do not apply (the model's inputs changed, or its `assume`s refuse them), the
+    /// new session starts at the initial state and the message says why.
+    pub fn reapply(
+        &self,
+        loaded: Arc<crate::load::Loaded>,
+    ) -> (Session, Vec<TickOut>, Option<String>) {
+        let mut fresh = Session::new(Arc::clone(&loaded));
+        if self.history.is_empty() {
+            if Arc::ptr_eq(&self.program, &loaded) {
+                fresh.held = self.held.clone();
+            }
+            return (fresh, Vec::new(), None);
+        }
+        let text = self.scenario_text();
+        let n = self.history.len();
+        match fresh.load_scenario(&text) {
+            Ok(ticks) => {
+                if Arc::ptr_eq(&self.program, &loaded) {
+                    fresh.held = self.held.clone();
+                    if let (Some(a), Some(b)) = (&mut fresh.lasso, &self.lasso) {
+                        a.following = b.following;
+                    }
+                }
+                let note = (ticks.len() < n).then(|| {
+                    format!(
+                        "{} of the {n} ticks so far re-applied: the run stops earlier now",
+                        ticks.len()
+                    )
+                });
+                (fresh, ticks, note)
+            }
+            Err(e) => (
+                Session::new(loaded),
+                Vec::new(),
+                Some(format!(
+                    "the {n} ticks so far do not apply to the model now ({}); the run starts again",
+                    e.message
+                )),
+            ),
+        }
+    }
+
     fn held_from(&mut self, mut last: Vec<i64>) {
         let p = &self.program.program;
         for (k, inp) in p.inputs.iter().enumerate() {
