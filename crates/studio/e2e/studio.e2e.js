@@ -291,8 +291,12 @@ async function linearDrive(browser) {
   await page.click('#stepn');
   await page.waitForFunction(() => window.studio.run.ticks > 0);
   await page.waitForTimeout(300);
-  await checkAgainstSim(page, model, null, 'linear.scn');
+  const ref = await checkAgainstSim(page, model, null, 'linear.scn');
   await page.screenshot({path: path.join(SHOTS, 'linear_drive.png')});
+  // A browser reload resumes the session: the same ticks, as sim has them.
+  await page.reload();
+  await page.waitForFunction(n => window.studio && window.studio.ready && window.studio.run && window.studio.run.ticks === n && window.studio.laidOut, ref.ticks.length, {timeout: 60000});
+  await checkAgainstSim(page, model, null, 'linear-reloaded.scn');
   await page.close();
 }
 
