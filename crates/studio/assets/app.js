@@ -269,7 +269,7 @@ function buildCharts() {
   }
   studio.svgs = m.instances.map(inst => {
     const card = document.createElement('div');
-    card.className = 'card';
+    card.className = 'card' + (pending.some(p => p.chart === inst.chart) ? ' pending' : '');
     card.dataset.instance = inst.name;
     card.innerHTML = `<div class="cardhead">${escapeHtml(inst.name)}<span class="chartname">${escapeHtml(m.charts[inst.chart].name)}${inst.observer ? ' · observer' : ''}</span></div>` + svgText[inst.chart];
     box.appendChild(card);
@@ -294,11 +294,15 @@ function buildCharts() {
         const fresh = holder.firstChild;
         old.replaceWith(fresh);
         studio.svgs[k] = fresh;
+        const card = fresh.closest('.card');
+        if (card) card.classList.remove('pending');
       });
       zoom();
       render();
     }).catch(e => {
-      if (gen === generation) toast(`layout of ${m.charts[chart].name} failed (${e.message}); the provisional drawing stays`, true);
+      if (gen !== generation) return;
+      toast(`layout of ${m.charts[chart].name} failed (${e.message}); the provisional drawing stays`, true);
+      m.instances.forEach((inst, k) => { if (inst.chart === chart && studio.svgs[k]) studio.svgs[k].closest('.card').classList.remove('pending'); });
     }).finally(() => {
       if (gen !== generation) return;
       if (--left === 0) {
@@ -382,6 +386,10 @@ function renderStatus() {
     if (l.violated) s += ` · <span class="stop">${escapeHtml(l.violated.message)} (on the infinite run)</span>`;
   }
   $('#status').innerHTML = s;
+  // Viewing an earlier tick, Back branches there.
+  const past = studio.cursor >= 0 && studio.cursor < studio.records.length - 1;
+  $('#back').textContent = past ? `⑂ Branch at ${studio.cursor}` : '◀ Back';
+  $('#back').title = past ? `Continue interactively from tick ${studio.cursor} (the later ticks are kept for Redo)` : 'Step back one tick (←)';
   $('#forward').disabled = !run.future;
   $('#back').disabled = t === 0;
   for (const id of ['#step', '#stepn', '#run']) $(id).disabled = !!run.stop;
