@@ -106,11 +106,44 @@ async function checkAgainstSim(page, model, system, name) {
   return ref;
 }
 
+// The issue's layout bar: in every chart's final drawing no two state boxes overlap unless one
+// holds the other, no two transition labels overlap, and no label overlaps a leaf state.
+// Measured on the SVG the browser rendered (text boxes as the browser sizes them).
+async function overlaps(page) {
+  return page.evaluate(() => {
+    const out = [], seen = new Set();
+    const inter = (a, b) => a.x < b.x + b.w - 0.5 && b.x < a.x + a.w - 0.5 && a.y < b.y + b.h - 0.5 && b.y < a.y + a.h - 0.5;
+    const holds = (p, q) => p.x <= q.x && p.y <= q.y && p.x + p.w >= q.x + q.w && p.y + p.h >= q.y + q.h;
+    const box = b => ({x: b.x, y: b.y, w: b.width, h: b.height});
+    studio.model.instances.forEach((inst, k) => {
+      if (seen.has(inst.chart)) return;
+      seen.add(inst.chart);
+      const svg = studio.svgs[k], name = studio.model.charts[inst.chart].name;
+      const states = [...svg.querySelectorAll('g.st > rect')].map(r => ({n: r.parentNode.querySelector('title').textContent, leaf: r.parentNode.classList.contains('leaf'), ...box(r.getBBox())}));
+      const labels = [...svg.querySelectorAll('g.tr')].filter(g => g.querySelector(':scope > text')).map(g => {
+        const ts = [...g.querySelectorAll(':scope > text')].map(t => t.getBBox());
+        const x = Math.min(...ts.map(b => b.x)), y = Math.min(...ts.map(b => b.y));
+        return {n: g.querySelector('text').textContent, x, y, w: Math.max(...ts.map(b => b.x + b.width)) - x, h: Math.max(...ts.map(b => b.y + b.height)) - y};
+      });
+      for (let i = 0; i < states.length; i++) for (let j = i + 1; j < states.length; j++) {
+        const a = states[i], b = states[j];
+        if (!holds(a, b) && !holds(b, a) && inter(a, b)) out.push(`${name}: states ${a.n} and ${b.n}`);
+      }
+      for (let i = 0; i < labels.length; i++) for (let j = i + 1; j < labels.length; j++) {
+        if (inter(labels[i], labels[j])) out.push(`${name}: labels "${labels[i].n}" and "${labels[j].n}"`);
+      }
+      for (const l of labels) for (const st of states) if (st.leaf && inter(l, st)) out.push(`${name}: label "${l.n}" on state ${st.n}`);
+    });
+    return out;
+  });
+}
+
 async function famClosedLoop(browser) {
   const model = 'examples/fam/fam_system.sc';
   const url = await serve(model);
   const page = await browser.newPage({viewport: {width: 1680, height: 1050}, acceptDownloads: true});
   const ms = await open(page, url);
+  assert.deepStrictEqual(await overlaps(page), [], 'no overlapping boxes or labels (FAM closed loop)');
   console.log(`page load (fam_system.sc): ${ms} ms (layout ${Math.round(await page.evaluate(() => window.studio.layoutMs))} ms)`);
   await page.selectOption('#preset', 'closed');
   // The closed-loop preset shows the CCM and the faults only.
@@ -267,6 +300,7 @@ async function fam5(browser) {
   const page = await browser.newPage({viewport: {width: 1920, height: 1200}, acceptDownloads: true});
   const ms = await open(page, url);
   console.log(`page load (fam_system5.sc), first visit: ${ms} ms (layout ${Math.round(await page.evaluate(() => window.studio.layoutMs))} ms)`);
+  assert.deepStrictEqual(await overlaps(page), [], 'no overlapping boxes or labels (Fam, Controller, MasterBus5, …)');
   const again = await open(page, url);
   console.log(`page load (fam_system5.sc), reload with the layout cached: ${again} ms`);
   await page.check('#random');
@@ -286,6 +320,7 @@ async function linearDrive(browser) {
   const url = await serve(model);
   const page = await browser.newPage({viewport: {width: 1500, height: 950}, acceptDownloads: true});
   await open(page, url);
+  assert.deepStrictEqual(await overlaps(page), [], 'no overlapping boxes or labels (linear drive)');
   await page.check('#random');
   await page.fill('#n', '25');
   await page.click('#stepn');
