@@ -15,6 +15,7 @@ let running = false, busy = false;
 // server resumes the run (it keeps a closed page's session for a while, see docs/studio.md).
 const RESUME = 'statecheck-resume';
 function connect() {
+  performance.mark('studio-connect');
   let resume = '';
   try { resume = sessionStorage.getItem(RESUME) || ''; } catch (e) { resume = ''; }
   ws = new WebSocket(`${location.protocol === 'https:' ? 'wss' : 'ws'}://${location.host}/ws?token=${encodeURIComponent(token)}` +
@@ -34,7 +35,9 @@ studio.send = send;
 function receive(m) {
   if (m.resume) { try { sessionStorage.setItem(RESUME, m.resume); } catch (e) { /* storage disabled */ } }
   if (m.type === 'model') {
+    performance.mark('studio-model');
     if (m.session !== undefined) setModel(m.model);
+    performance.mark('studio-charts');
   } else if (m.type === 'diagnostics') {
     showDiagnostics(m.diagnostics);
   } else if (m.type === 'state') {
@@ -228,7 +231,7 @@ function applyPreset(p, fault) {
 // highlighted and animated, so the page is interactive at once.
 let worker = null, workerSeq = 0;
 const workerWaiting = new Map();
-function layoutInWorker(chart) {
+function startWorker() {
   if (!worker) {
     worker = new Worker('/layout-worker.js');
     worker.onmessage = e => {
@@ -242,6 +245,9 @@ function layoutInWorker(chart) {
       worker = null;
     };
   }
+}
+function layoutInWorker(chart) {
+  startWorker();
   const id = ++workerSeq;
   return new Promise((resolve, reject) => {
     workerWaiting.set(id, {resolve, reject});
@@ -255,6 +261,7 @@ function buildCharts() {
   box.innerHTML = '';
   const m = studio.model;
   const gen = ++generation;
+  studio.afterPaint = null;
   const svgText = {}, pending = [];
   for (const inst of m.instances) {
     if (inst.chart in svgText) continue;
@@ -280,7 +287,12 @@ function buildCharts() {
   zoom();
   studio.laidOut = !pending.length;
   if (!pending.length) return;
-  // Visible charts first (the cards are in instance order).
+  // The layouts start once the first state is drawn (the page is interactive first; the worker
+  // would compete with it for the processor), in instance order.
+  studio.afterPaint = () => layoutPending(m, gen, pending);
+}
+
+function layoutPending(m, gen, pending) {
   let left = pending.length;
   for (const {chart, key} of pending) {
     layoutInWorker(m.charts[chart]).then(svg => {
@@ -346,7 +358,13 @@ function applyState(m) {
   studio.cursor = studio.records.length - 1;
   syncControls();
   render();
-  if (!studio.painted) { studio.painted = true; performance.mark('studio-interactive'); }
+  if (!studio.painted) {
+    studio.painted = true;
+    performance.mark('studio-interactive');
+    const then = studio.afterPaint;
+    studio.afterPaint = null;
+    if (then) then();
+  }
 }
 
 function shown() {
@@ -601,3 +619,4 @@ function wire() {
 
 wire();
 connect();
+

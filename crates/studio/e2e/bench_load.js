@@ -39,7 +39,8 @@ async function marks(page) {
   return page.evaluate(fallback => {
     const at = name => { const m = performance.getEntriesByName(name); return m.length ? m[m.length - 1].startTime : fallback; };
     const i = at('studio-interactive');
-    return {interactive: i, laidOut: Math.max(i, at('studio-laid-out'))};
+    return {interactive: i, laidOut: Math.max(i, at('studio-laid-out')),
+      connect: at('studio-connect'), model: at('studio-model'), charts: at('studio-charts')};
   }, fallback);
 }
 
@@ -56,6 +57,7 @@ const fmt = a => `median ${Math.round(median(a))} ms, min ${Math.round(Math.min(
     await page.goto(url);
     const c = await marks(page);
     cold.interactive.push(c.interactive); cold.laidOut.push(c.laidOut);
+    for (const k of ['connect', 'model', 'charts']) (cold[k] = cold[k] || []).push(c[k]);
     await page.reload();
     const w = await marks(page);
     warm.interactive.push(w.interactive); warm.laidOut.push(w.laidOut);
@@ -65,5 +67,6 @@ const fmt = a => `median ${Math.round(median(a))} ms, min ${Math.round(Math.min(
   await browser.close();
   console.log(`page load of ${MODEL}, ${N} loads each`);
   console.log(`cold (fresh browser context): interactive ${fmt(cold.interactive)}; laid out ${fmt(cold.laidOut)}`);
+  console.log(`cold, on the way (medians): scripts run at ${Math.round(median(cold.connect))} ms, model received ${Math.round(median(cold.model))} ms, charts built ${Math.round(median(cold.charts))} ms`);
   console.log(`warm (reload):                interactive ${fmt(warm.interactive)}; laid out ${fmt(warm.laidOut)}`);
 })().catch(e => { console.error(e); process.exit(1); });
