@@ -244,6 +244,20 @@ async function verifyInPage(browser) {
   assert.strictEqual(await page.evaluate(() => window.studio.run.stop.tick), 3);
   await page.check('#cov');
   await page.screenshot({path: path.join(SHOTS, 'verify.png')});
+  // The file changes under the page: a broken model shows its diagnostics (line 5: an unknown
+  // state), the fixed one (n counts by 2 now) re-applies the replayed ticks: with `go` in
+  // ticks 1.. n is 0, 2, 4 after ticks 0..2, so `small` (n < 3) is violated at tick 2 now and
+  // the run stops there, as sim stops.
+  const src = fs.readFileSync(model, 'utf8');
+  fs.writeFileSync(model, src.replace('-> B;', '-> Nowhere;'));
+  await page.waitForFunction(() => !document.querySelector('#diag').hidden, null, {timeout: 30000});
+  const diag = await page.textContent('#diag');
+  assert.ok(diag.includes(':5:') && diag.includes('Nowhere'), diag);
+  fs.writeFileSync(model, src.replace('n + 1', 'n + 2'));
+  await page.waitForFunction(() => document.querySelector('#diag').hidden && window.studio.model && window.studio.run && window.studio.records.length > 0, null, {timeout: 30000});
+  const after = await page.evaluate(() => ({n: window.studio.records.map(r => r.vars && r.vars['Count.n']), stop: window.studio.run.stop}));
+  assert.deepStrictEqual(after.n, [0, 2, 4], JSON.stringify(after));
+  assert.strictEqual(after.stop.message, 'property `small` violated at tick 2');
   await page.close();
 }
 
