@@ -204,11 +204,19 @@ impl Session {
     }
 
     /// The inputs so far as a scenario text (the `statecheck sim --scenario` format).
-    /// A lasso still at its end is written with its `loop:` line.
+    /// A followed lasso at its end, or after whole laps of its loop, is written with its
+    /// `loop:` line (the loop then spans the laps: the same infinite run).
     pub fn scenario_text(&self) -> String {
         let p = self.program();
+        let len = self.history.len();
         let sc = match &self.lasso {
-            Some(l) if l.following && l.broken.is_none() && self.history.len() == l.end => {
+            Some(l)
+                if l.following
+                    && l.broken.is_none()
+                    && l.end > l.start
+                    && len >= l.end
+                    && (len - l.end).is_multiple_of(l.end - l.start) =>
+            {
                 scenario::from_lasso(p, &self.history, l.start)
             }
             _ => scenario::from_input_vectors(p, &self.history),

@@ -65,6 +65,21 @@ async fn a_lasso_replays_and_steps_around_its_loop() {
             json!(["c.inc"])
         ]
     );
+    // After two whole laps it is still a lasso (the loop spans ticks 2..7): saved with its
+    // `loop:` line, and loaded it gives the same verdict. One tick more would not be.
+    let saved = call(&mut ws, json!({"op": "save"})).await;
+    let saved = saved["text"].as_str().expect("text").to_string();
+    assert!(saved.contains("loop:"), "{saved}");
+    let (mut ws2, _) = connect(&h).await;
+    let again = call(&mut ws2, json!({"op": "load_scenario", "text": saved})).await;
+    assert_eq!(ns(&again), [0, 1, 0, 1, 0, 1, 0, 1], "{again}");
+    assert_eq!(
+        (
+            again["run"]["lasso"]["start"].as_u64(),
+            again["run"]["lasso"]["violated"]["message"].as_str()
+        ),
+        (Some(2), Some("property `reaches3` violated at tick 7"))
+    );
     // A pulse leaves the loop: inc at tick 8 (n = 2), then no events (n stays 2).
     let s = step(&mut ws, 1, json!({}), json!({"c.inc": true})).await;
     assert_eq!(ns(&s), [2], "{s}");
