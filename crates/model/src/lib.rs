@@ -15,6 +15,7 @@ pub mod imports;
 pub mod lint;
 pub mod model;
 pub mod ops;
+mod params;
 mod property;
 mod rebase;
 mod scope;
@@ -38,6 +39,39 @@ pub fn check(file: &ast::File) -> (Model, Vec<Diagnostic>) {
     let mut early = Vec::new();
     collect_globals(file, &mut globals, &mut early);
     check_consts_and_fns(file, &mut globals, &mut early);
+    // Parameterised charts become one ordinary chart per argument list (`params.rs`).
+    let expanded = {
+        let view = globals.clone();
+        let mut sub = ExprChecker {
+            globals: &view,
+            sink: Sink {
+                diags: Vec::new(),
+                muted: 0,
+            },
+            next_local: 0,
+        };
+        let e = params::expand(file, &mut sub);
+        early.extend(sub.sink.diags);
+        e
+    };
+    let (file, origins) = match &expanded {
+        Some(e) => {
+            globals.chart_ids.clear();
+            let charts = e.file.items.iter().filter_map(|i| match i {
+                ast::Item::Chart(c) => Some(c),
+                _ => None,
+            });
+            for (id, c) in charts.enumerate() {
+                globals
+                    .chart_ids
+                    .entry(c.name.name.clone())
+                    .or_insert(id as ChartId);
+            }
+            (&e.file, e.origins.as_slice())
+        }
+        None => (file, &[][..]),
+    };
+    let origin = |id: usize| origins.get(id).unwrap_or(&params::Origin::Plain);
     let globals_ref = &globals;
     let consts_snapshot = globals_ref.const_order.clone();
     let mut ck = ExprChecker {
@@ -58,13 +92,17 @@ pub fn check(file: &ast::File) -> (Model, Vec<Diagnostic>) {
             _ => None,
         })
         .collect();
-    let skeletons: Vec<_> = chart_asts
-        .iter()
-        .map(|c| chart::skeleton(&mut ck, c, model::ChartRole::Normal))
-        .collect();
+    let mut skeletons = Vec::new();
+    for (id, c) in chart_asts.iter().enumerate() {
+        let before = ck.sink.diags.len();
+        skeletons.push(chart::skeleton(&mut ck, c, model::ChartRole::Normal));
+        params::annotate(&mut ck.sink.diags, before, origin(id), &c.name.name);
+    }
     let mut charts: Vec<Chart> = Vec::new();
-    for (sk, c) in skeletons.into_iter().zip(&chart_asts) {
+    for (id, (sk, c)) in skeletons.into_iter().zip(&chart_asts).enumerate() {
+        let before = ck.sink.diags.len();
         let filled = chart::fill(&mut ck, sk, c, None, &[]);
+        params::annotate(&mut ck.sink.diags, before, origin(id), &c.name.name);
         charts.push(filled);
     }
 
@@ -89,7 +127,9 @@ pub fn check(file: &ast::File) -> (Model, Vec<Diagnostic>) {
     }
     // Every top-level chart can also run alone, as a system of one instance named like it.
     for (id, c) in chart_asts.iter().enumerate() {
-        if system_names.contains_key(&c.name.name) {
+        if system_names.contains_key(&c.name.name)
+            || !matches!(origin(id), params::Origin::Plain | params::Origin::Defaults)
+        {
             continue;
         }
         let mut properties = charts[id].properties.clone();
@@ -134,6 +174,9 @@ pub fn check(file: &ast::File) -> (Model, Vec<Diagnostic>) {
         diags.extend(lint::lint(&model));
     }
     diags.sort_by_key(|d| (d.span.start, d.span.end));
+    if expanded.is_some() {
+        params::dedup(&mut diags);
+    }
     (model, diags)
 }
 

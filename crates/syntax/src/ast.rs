@@ -175,6 +175,9 @@ pub struct Chart {
     pub name: Ident,
     /// `plant`/`requirement`/`observer` and similar role keywords before `chart` (later issues).
     pub role: Option<Ident>,
+    /// Compile-time parameters, `chart Sensor(lo: int, hi: int = 5) { … }`; empty for a chart
+    /// without a parameter list. Instances give arguments; the model substitutes them.
+    pub params: Vec<ChartParam>,
     /// Variable and event declarations in textual order.
     pub vars: Vec<VarDecl>,
     /// The chart's top level, which is a state body without a name.
@@ -182,6 +185,19 @@ pub struct Chart {
     /// Properties stated inside the chart; they hold for every instance.
     pub properties: Vec<Property>,
     /// The whole chart.
+    pub span: Span,
+}
+
+/// A chart parameter `name: type [= default]`: a constant fixed by each instance.
+#[derive(Clone, Debug, PartialEq)]
+pub struct ChartParam {
+    /// The parameter's name.
+    pub name: Ident,
+    /// Its type: `int`, `int[lo..hi]`, `bool` or an enum.
+    pub ty: TypeExpr,
+    /// The value used when an instance gives no argument for it.
+    pub default: Option<Expr>,
+    /// The whole declaration.
     pub span: Span,
 }
 
@@ -603,7 +619,20 @@ pub struct Instance {
     pub count: Option<Expr>,
     /// The chart it instantiates.
     pub chart: Ident,
+    /// The arguments of a parameterised chart, `: Sensor(0, hi = 5)`, in order.
+    pub args: Vec<Arg>,
     /// Whole declaration.
+    pub span: Span,
+}
+
+/// One argument of an instance: positional (`5`) or named (`hi = 5`).
+#[derive(Clone, Debug, PartialEq)]
+pub struct Arg {
+    /// The parameter's name for a named argument.
+    pub name: Option<Ident>,
+    /// The value; must be a constant expression.
+    pub value: Expr,
+    /// The whole argument.
     pub span: Span,
 }
 

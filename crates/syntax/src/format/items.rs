@@ -149,17 +149,32 @@ impl Printer<'_> {
 
     /// A chart (`role` is `plant`, `requirement`, or `observer` inside a system).
     fn chart(&mut self, c: &Chart) {
-        let head = match &c.role {
+        let mut head = match &c.role {
             Some(r) if r.name == "observer" => format!("observer {}", c.name.name),
             Some(r) => format!("{} chart {}", r.name, c.name.name),
             None => format!("chart {}", c.name.name),
         };
+        if !c.params.is_empty() {
+            let ps: Vec<String> = c
+                .params
+                .iter()
+                .map(|p| {
+                    let default = p
+                        .default
+                        .as_ref()
+                        .map(|e| format!(" = {}", self.expr(e)))
+                        .unwrap_or_default();
+                    format!("{}: {}{default}", p.name.name, self.ty(&p.ty))
+                })
+                .collect();
+            head.push_str(&format!("({})", ps.join(", ")));
+        }
         let ms = self.members(&c.body, &c.vars, &c.properties, true);
         self.comments_before(c.name.span.start);
         self.start_line(c.span.start);
         self.out.push_str(&head);
         self.out.push_str(" {");
-        let brace = self.lbrace_after(c.name.span.end);
+        let brace = self.lbrace_after(c.params.last().map_or(c.name.span.end, |p| p.span.end));
         self.open(brace);
         self.print_members(&ms);
         self.close(c.span.end, "", c.span.end);
@@ -173,7 +188,20 @@ impl Printer<'_> {
                 .as_ref()
                 .map(|e| format!("[{}]", self.expr(e)))
                 .unwrap_or_default();
-            let t = format!("instance {}{count}: {};", i.name.name, i.chart.name);
+            let args = if i.args.is_empty() {
+                String::new()
+            } else {
+                let a: Vec<String> = i
+                    .args
+                    .iter()
+                    .map(|a| match &a.name {
+                        Some(n) => format!("{} = {}", n.name, self.expr(&a.value)),
+                        None => self.expr(&a.value),
+                    })
+                    .collect();
+                format!("({})", a.join(", "))
+            };
+            let t = format!("instance {}{count}: {}{args};", i.name.name, i.chart.name);
             ms.push((i.span.start, SysMember::Line(i.span, t)));
         }
         for c in &s.connections {

@@ -3,9 +3,9 @@
 use super::body::is_body_kw;
 use super::{is_chart_elem_kw, is_item_kw, is_system_kw, Failed, PResult, Parser};
 use crate::ast::{
-    Assume, Chart, ConstDecl, Control, EnumDecl, Expr, File, FnDecl, Ident, Instance, Item,
-    OrderDecl, Param, Property, PropertyKind, RequirementKind, StateBody, StateRequirement, System,
-    TickDecl, VarDecl, VarKind,
+    Arg, Assume, Chart, ChartParam, ConstDecl, Control, EnumDecl, Expr, File, FnDecl, Ident,
+    Instance, Item, OrderDecl, Param, Property, PropertyKind, RequirementKind, StateBody,
+    StateRequirement, System, TickDecl, VarDecl, VarKind,
 };
 use crate::lexer::{Kw, Tok};
 use statecheck_base::{Diagnostic, Span};
@@ -278,7 +278,7 @@ impl Parser<'_> {
         }
     }
 
-    /// `[ 'plant' | 'requirement' ] 'chart' IDENT '{' { chart_elem } '}'`
+    /// `[ 'plant' | 'requirement' ] 'chart' IDENT [ '(' params ')' ] '{' { chart_elem } '}'`
     fn chart(&mut self) -> PResult<Chart> {
         let start = self.tok().span;
         let role = if self.at_kw(Kw::Plant) || self.at_kw(Kw::Requirement) {
@@ -295,10 +295,16 @@ impl Parser<'_> {
         };
         self.bump();
         let name = self.expect_ident("a chart name after `chart`")?;
+        let params = if self.at(Tok::LParen) {
+            self.chart_params()?
+        } else {
+            Vec::new()
+        };
         let open = self.expect(Tok::LBrace, "after the chart name")?;
         let mut chart = Chart {
             name,
             role,
+            params,
             vars: Vec::new(),
             body: StateBody::default(),
             properties: Vec::new(),
@@ -308,6 +314,80 @@ impl Parser<'_> {
         self.chart_elems(&mut chart, open, &what, is_item_kw);
         chart.span = self.span_from(start);
         Ok(chart)
+    }
+
+    /// `'(' [ IDENT ':' type [ '=' expr ] { ',' … } ] ')'` after a chart's name.
+    fn chart_params(&mut self) -> PResult<Vec<ChartParam>> {
+        let open = self.bump().span;
+        let mut params = Vec::new();
+        if self.eat(Tok::RParen).is_some() {
+            return Ok(params);
+        }
+        loop {
+            let name = self.expect_ident("a parameter name")?;
+            if self.eat(Tok::Colon).is_none() {
+                let d = self
+                    .expected_diag("`:` after the parameter name")
+                    .with_hint(format!(
+                        "chart parameters need a type, e.g. `{}: int`",
+                        name.name
+                    ));
+                self.report(d);
+                return Err(Failed);
+            }
+            let ty = self.ty()?;
+            let default = if self.eat(Tok::Assign).is_some() {
+                Some(self.expr())
+            } else {
+                None
+            };
+            let span = self.span_from(name.span);
+            params.push(ChartParam {
+                name,
+                ty,
+                default,
+                span,
+            });
+            if self.eat(Tok::Comma).is_some() {
+                continue;
+            }
+            if !self.close(Tok::RParen, open, "the parameter list") {
+                return Err(Failed);
+            }
+            return Ok(params);
+        }
+    }
+
+    /// `'(' [ arg { ',' arg } ] ')'` after an instance's chart, `arg = [ IDENT '=' ] expr`.
+    fn instance_args(&mut self) -> PResult<Vec<Arg>> {
+        let open = self.bump().span;
+        let mut args = Vec::new();
+        if self.eat(Tok::RParen).is_some() {
+            return Ok(args);
+        }
+        loop {
+            let start = self.tok().span;
+            let name = if self.at(Tok::Ident) && self.nth(1).kind == Tok::Assign {
+                let t = self.bump();
+                self.bump();
+                Some(self.ident_of(t))
+            } else {
+                None
+            };
+            let value = self.expr();
+            args.push(Arg {
+                name,
+                value,
+                span: self.span_from(start),
+            });
+            if self.eat(Tok::Comma).is_some() {
+                continue;
+            }
+            if !self.close(Tok::RParen, open, "the argument list") {
+                return Err(Failed);
+            }
+            return Ok(args);
+        }
     }
 
     /// The elements of a chart (or observer) body after its `{`.
@@ -638,7 +718,7 @@ impl Parser<'_> {
         Ok(sys)
     }
 
-    /// `'instance' IDENT [ '[' expr ']' ] ':' IDENT ';'`
+    /// `'instance' IDENT [ '[' expr ']' ] ':' IDENT [ '(' args ')' ] ';'`
     fn instance(&mut self) -> PResult<Instance> {
         let start = self.bump().span;
         let name = self.expect_ident("an instance name after `instance`")?;
@@ -653,11 +733,17 @@ impl Parser<'_> {
         };
         self.expect(Tok::Colon, "before the chart name")?;
         let chart = self.expect_ident("a chart name")?;
+        let args = if self.at(Tok::LParen) {
+            self.instance_args()?
+        } else {
+            Vec::new()
+        };
         self.expect_semi("after the instance declaration");
         Ok(Instance {
             name,
             count,
             chart,
+            args,
             span: self.span_from(start),
         })
     }
@@ -712,6 +798,7 @@ impl Parser<'_> {
         let mut chart = Chart {
             name,
             role: Some(role),
+            params: Vec::new(),
             vars: Vec::new(),
             body: StateBody::default(),
             properties: Vec::new(),
