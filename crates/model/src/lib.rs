@@ -9,6 +9,7 @@
 
 mod cascade;
 mod chart;
+pub mod components;
 mod expr;
 pub mod formula;
 pub mod imports;
@@ -39,6 +40,12 @@ pub fn check(file: &ast::File) -> (Model, Vec<Diagnostic>) {
     let mut early = Vec::new();
     collect_globals(file, &mut globals, &mut early);
     check_consts_and_fns(file, &mut globals, &mut early);
+    // Systems with configurations become one system per configuration (`components.rs`).
+    let configured = components::expand(file, &mut early);
+    let (file, sys_origins) = match &configured {
+        Some(c) => (&c.file, c.origins.as_slice()),
+        None => (file, &[][..]),
+    };
     // Parameterised charts become one ordinary chart per argument list (`params.rs`).
     let expanded = {
         let view = globals.clone();
@@ -105,11 +112,21 @@ pub fn check(file: &ast::File) -> (Model, Vec<Diagnostic>) {
         params::annotate(&mut ck.sink.diags, before, origin(id), &c.name.name);
         charts.push(filled);
     }
+    for (id, c) in chart_asts.iter().enumerate() {
+        if *origin(id) != params::Origin::Placeholder {
+            let before = ck.sink.diags.len();
+            components::conformance(file, c, &charts[id], &mut ck);
+            params::annotate(&mut ck.sink.diags, before, origin(id), &c.name.name);
+        }
+    }
 
     let mut systems = Vec::new();
     let mut system_names: HashMap<String, Span> = HashMap::new();
+    let mut sys_index = 0;
     for item in &file.items {
         if let ast::Item::System(s) = item {
+            let sys_origin = sys_origins.get(sys_index).cloned().flatten();
+            sys_index += 1;
             if let Some(prev) = system_names.insert(s.name.name.clone(), s.name.span) {
                 ck.sink.push(
                     Diagnostic::error(
@@ -122,7 +139,15 @@ pub fn check(file: &ast::File) -> (Model, Vec<Diagnostic>) {
                 );
                 continue;
             }
+            let before = ck.sink.diags.len();
             systems.push(system::check_system(&mut ck, s, &mut charts));
+            if let Some((config, at)) = sys_origin {
+                for d in &mut ck.sink.diags[before..] {
+                    *d = d
+                        .clone()
+                        .with_secondary(at, format!("in configuration `{config}`"));
+                }
+            }
         }
     }
     // Every top-level chart can also run alone, as a system of one instance named like it.
@@ -174,8 +199,9 @@ pub fn check(file: &ast::File) -> (Model, Vec<Diagnostic>) {
         diags.extend(lint::lint(&model));
     }
     diags.sort_by_key(|d| (d.span.start, d.span.end));
-    if expanded.is_some() {
+    if expanded.is_some() || configured.is_some() {
         params::dedup(&mut diags);
+        components::suppress_slot_cascades(file, &mut diags);
     }
     (model, diags)
 }
@@ -259,6 +285,9 @@ fn collect_globals(file: &ast::File, g: &mut Globals, diags: &mut Vec<Diagnostic
                     let index = g.fns.len();
                     g.fns.insert(f.name.name.clone(), (index, f.clone()));
                 }
+            }
+            ast::Item::Interface(i) => {
+                declare(&i.name, diags);
             }
             ast::Item::System(_) | ast::Item::Import(_) => {}
             ast::Item::Tick(t) => {

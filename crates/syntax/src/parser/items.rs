@@ -3,9 +3,9 @@
 use super::body::is_body_kw;
 use super::{is_chart_elem_kw, is_item_kw, is_system_kw, Failed, PResult, Parser};
 use crate::ast::{
-    Arg, Assume, Chart, ChartParam, ConstDecl, Control, EnumDecl, Expr, File, FnDecl, Ident,
-    Instance, Item, OrderDecl, Param, Property, PropertyKind, RequirementKind, StateBody,
-    StateRequirement, System, TickDecl, VarDecl, VarKind,
+    Arg, Assume, Binding, Chart, ChartParam, Configuration, ConstDecl, Control, EnumDecl, Expr,
+    File, FnDecl, Ident, Instance, InterfaceDecl, Item, OrderDecl, Param, Property, PropertyKind,
+    RequirementKind, StateBody, StateRequirement, System, TickDecl, VarDecl, VarKind,
 };
 use crate::lexer::{Kw, Tok};
 use statecheck_base::{Diagnostic, Span};
@@ -26,6 +26,16 @@ impl Parser<'_> {
                     Ok(item) => items.push(crate::ast::Item::Import(item)),
                     Err(Failed) => self.recover(),
                 },
+                Tok::Ident
+                    if self.text(t.span) == "interface"
+                        && self.nth(1).kind == Tok::Ident
+                        && self.nth(2).kind == Tok::LBrace =>
+                {
+                    match self.interface() {
+                        Ok(item) => items.push(crate::ast::Item::Interface(item)),
+                        Err(Failed) => self.recover(),
+                    }
+                }
                 Tok::RBrace => {
                     let d = Diagnostic::error("E0010", "unmatched `}`", t.span)
                         .with_label("no open `{` to close");
@@ -300,11 +310,20 @@ impl Parser<'_> {
         } else {
             Vec::new()
         };
+        let mut implements = Vec::new();
+        if self.at(Tok::Ident) && self.text(self.tok().span) == "implements" {
+            self.bump();
+            implements.push(self.expect_ident("an interface name after `implements`")?);
+            while self.eat(Tok::Comma).is_some() {
+                implements.push(self.expect_ident("an interface name after `,`")?);
+            }
+        }
         let open = self.expect(Tok::LBrace, "after the chart name")?;
         let mut chart = Chart {
             name,
             role,
             params,
+            implements,
             vars: Vec::new(),
             body: StateBody::default(),
             properties: Vec::new(),
@@ -644,6 +663,7 @@ impl Parser<'_> {
             properties: Vec::new(),
             observers: Vec::new(),
             requirements: Vec::new(),
+            configurations: Vec::new(),
             span: start,
         };
         loop {
@@ -666,6 +686,13 @@ impl Parser<'_> {
             let r = match t {
                 Tok::Ident if self.at_temporal_decl() => {
                     self.temporal_property().map(|p| sys.properties.push(p))
+                }
+                Tok::Ident
+                    if self.text(self.tok().span) == "configuration"
+                        && self.nth(1).kind == Tok::Ident
+                        && self.nth(2).kind == Tok::LBrace =>
+                {
+                    self.configuration().map(|c| sys.configurations.push(c))
                 }
                 Tok::Kw(Kw::Instance) => self.instance().map(|i| sys.instances.push(i)),
                 Tok::Kw(Kw::Connect) => self.connection().map(|c| sys.connections.push(c)),
@@ -748,6 +775,87 @@ impl Parser<'_> {
         })
     }
 
+    /// `'interface' IDENT '{' { ( 'input' | 'output' ) var_decl } '}'`
+    fn interface(&mut self) -> PResult<InterfaceDecl> {
+        let start = self.bump().span;
+        let name = self.expect_ident("an interface name after `interface`")?;
+        let open = self.expect(Tok::LBrace, "after the interface name")?;
+        let what = format!("interface `{}`", name.name);
+        let mut members = Vec::new();
+        loop {
+            if self.at_list_end(open, &what, is_item_kw) {
+                break;
+            }
+            let pos = self.pos;
+            let r = if self.at_kw(Kw::Input) || self.at_kw(Kw::Output) {
+                self.var_decl().map(|v| members.push(v))
+            } else {
+                self.unexpected(
+                    "a port of the interface (`input x: T;`, `output event e;`, …)",
+                    None,
+                );
+                Ok(())
+            };
+            if r.is_err() {
+                self.recover();
+            }
+            if self.pos == pos {
+                self.bump();
+            }
+        }
+        Ok(InterfaceDecl {
+            name,
+            members,
+            span: self.span_from(start),
+        })
+    }
+
+    /// `'configuration' IDENT '{' { IDENT '=' IDENT [ '(' args ')' ] ';' } '}'`
+    fn configuration(&mut self) -> PResult<Configuration> {
+        let start = self.bump().span;
+        let name = self.expect_ident("a configuration name after `configuration`")?;
+        let open = self.expect(Tok::LBrace, "after the configuration name")?;
+        let what = format!("configuration `{}`", name.name);
+        let mut bindings = Vec::new();
+        loop {
+            if self.at_list_end(open, &what, is_item_kw) {
+                break;
+            }
+            let pos = self.pos;
+            let r = self.binding().map(|b| bindings.push(b));
+            if r.is_err() {
+                self.recover();
+            }
+            if self.pos == pos {
+                self.bump();
+            }
+        }
+        Ok(Configuration {
+            name,
+            bindings,
+            span: self.span_from(start),
+        })
+    }
+
+    /// `IDENT '=' IDENT [ '(' args ')' ] ';'`
+    fn binding(&mut self) -> PResult<Binding> {
+        let instance = self.expect_ident("an instance name")?;
+        self.expect(Tok::Assign, "after the instance name")?;
+        let chart = self.expect_ident("a chart name after `=`")?;
+        let args = if self.at(Tok::LParen) {
+            self.instance_args()?
+        } else {
+            Vec::new()
+        };
+        self.expect_semi("after the binding");
+        Ok(Binding {
+            span: self.span_from(instance.span),
+            instance,
+            chart,
+            args,
+        })
+    }
+
     /// `'connect' path '->' path ';'`
     fn connection(&mut self) -> PResult<crate::ast::Connection> {
         let start = self.bump().span;
@@ -799,6 +907,7 @@ impl Parser<'_> {
             name,
             role: Some(role),
             params: Vec::new(),
+            implements: Vec::new(),
             vars: Vec::new(),
             body: StateBody::default(),
             properties: Vec::new(),
