@@ -216,7 +216,12 @@ impl Loaded {
                 ),
             };
         }
-        let explicit: Vec<_> = systems.iter().filter(|s| !s.implicit).collect();
+        // A system's configurations (`Plant:faulty`) are chosen with --config, not counted.
+        let sep = statecheck_model::components::CONFIG_SEP;
+        let explicit: Vec<_> = systems
+            .iter()
+            .filter(|s| !s.implicit && !s.name.contains(sep))
+            .collect();
         match explicit.as_slice() {
             [one] => return Ok(one),
             [] => {}

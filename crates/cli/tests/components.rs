@@ -119,3 +119,132 @@ fn formatting_keeps_parameters_and_arguments() {
     let (code, out, err) = run(&["fmt", "--check", "tests/components/counters.sc"]);
     assert_eq!(code, 0, "{out}{err}");
 }
+
+/// `--all-configs --json` on tests/components/sensors.sc: (configuration, [(property, verdict)], states).
+fn matrix() -> (i32, Vec<(String, Vec<(String, String)>, u64)>) {
+    let (code, out, err) = run(&[
+        "verify",
+        "--engine",
+        "explicit",
+        "--all-configs",
+        "--json",
+        "tests/components/sensors.sc",
+    ]);
+    let v: Value = serde_json::from_str(&out).unwrap_or_else(|e| panic!("{e}: {out}{err}"));
+    let rows = v["configurations"]
+        .as_array()
+        .map(|a| {
+            a.iter()
+                .map(|c| {
+                    let cells = c["results"]
+                        .as_array()
+                        .map(|rs| {
+                            rs.iter()
+                                .map(|r| {
+                                    (
+                                        r["property"].as_str().unwrap_or("?").to_string(),
+                                        r["verdict"].as_str().unwrap_or("?").to_string(),
+                                    )
+                                })
+                                .collect()
+                        })
+                        .unwrap_or_default();
+                    (
+                        c["configuration"].as_str().unwrap_or("?").to_string(),
+                        cells,
+                        c["states"].as_u64().unwrap_or(0),
+                    )
+                })
+                .collect()
+        })
+        .unwrap_or_default();
+    (code, rows)
+}
+
+#[test]
+fn all_configs_prints_the_hand_derived_matrix() {
+    let (code, rows) = matrix();
+    // By hand (sensors.sc): with `ideal` present == (raw > 3) in every tick, so the alarm
+    // follows the reading; `faulty` (raw = 4, stuck) and `sensitive` (threshold 0, raw = 1)
+    // break it in tick 0. The alarm can be on in all three. Every configuration has 3 states:
+    // before the first tick, and (present, alarm) in {(false, false), (true, true)}.
+    assert_eq!(code, 1, "a configuration violates a property");
+    let want = [
+        ("ideal", "proved"),
+        ("faulty", "violated"),
+        ("sensitive", "violated"),
+    ];
+    assert_eq!(rows.len(), want.len(), "{rows:?}");
+    for ((config, follows), (name, cells, states)) in want.iter().zip(&rows) {
+        assert_eq!(name, config);
+        let verdict = |p: &str| {
+            cells
+                .iter()
+                .find(|c| c.0 == p)
+                .map(|c| c.1.clone())
+                .unwrap_or_default()
+        };
+        assert_eq!(verdict("alarm_follows"), *follows, "{config}");
+        assert_eq!(verdict("alarm_on"), "reachable", "{config}");
+        assert_eq!(*states, 3, "{config}");
+    }
+}
+
+#[test]
+fn config_selects_one_configuration() {
+    let one = |config: &str| {
+        let (code, out, err) = run(&[
+            "verify",
+            "--engine",
+            "explicit",
+            "--json",
+            "--config",
+            config,
+            "tests/components/sensors.sc",
+        ]);
+        let v: Value = serde_json::from_str(&out).unwrap_or_else(|e| panic!("{e}: {out}{err}"));
+        (code, v["stats"]["transitions"].as_u64().unwrap_or(0))
+    };
+    // 3 states each; `ideal` has the 10 values of raw per tick, `faulty` also `stuck`: 20.
+    assert_eq!(one("ideal"), (0, 30));
+    assert_eq!(one("faulty"), (1, 60));
+    let (code, _, err) = run(&["verify", "--config", "nope", "tests/components/sensors.sc"]);
+    assert_eq!(code, 2);
+    assert!(
+        err.contains("has no configuration `nope`") && err.contains("ideal, faulty, sensitive"),
+        "{err}"
+    );
+}
+
+#[test]
+fn the_plain_system_is_its_first_configuration() {
+    let (_, a, _) = run(&[
+        "verify",
+        "--engine",
+        "explicit",
+        "--json",
+        "tests/components/sensors.sc",
+    ]);
+    let (_, b, _) = run(&[
+        "verify",
+        "--engine",
+        "explicit",
+        "--json",
+        "--config",
+        "ideal",
+        "tests/components/sensors.sc",
+    ]);
+    let strip = |s: &str| -> Value {
+        let mut v: Value = serde_json::from_str(s).unwrap_or(Value::Null);
+        // Times and memory differ from run to run.
+        v["stats"] = Value::Null;
+        if let Some(rs) = v["results"].as_array_mut() {
+            for r in rs {
+                r["time_s"] = Value::Null;
+            }
+        }
+        v
+    };
+    assert_eq!(strip(&a), strip(&b));
+    assert_ne!(strip(&a), Value::Null);
+}
