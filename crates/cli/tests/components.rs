@@ -120,8 +120,11 @@ fn formatting_keeps_parameters_and_arguments() {
     assert_eq!(code, 0, "{out}{err}");
 }
 
-/// `--all-configs --json` on tests/components/sensors.sc: (configuration, [(property, verdict)], states).
-fn matrix() -> (i32, Vec<(String, Vec<(String, String)>, u64)>) {
+/// One configuration's row: its name, (property, verdict) pairs, and its state count.
+type ConfigRow = (String, Vec<(String, String)>, u64);
+
+/// `--all-configs --json` on tests/components/sensors.sc: the exit code and the rows.
+fn matrix() -> (i32, Vec<ConfigRow>) {
     let (code, out, err) = run(&[
         "verify",
         "--engine",
