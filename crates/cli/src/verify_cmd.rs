@@ -238,11 +238,11 @@ pub fn run(a: VerifyArgs) -> Result<u8> {
     let cexs = live.counterexamples(&rep.results)?;
     match format {
         live::Format::Json => {
-            let v = report::json(&program, &loaded.source, rep, &cexs, &run.meta);
+            let v = report::json(&program, &loaded.sources, rep, &cexs, &run.meta);
             crate::write_out(None, &format!("{}\n", serde_json::to_string(&v)?))?;
         }
         live::Format::JsonLines => {
-            let v = serde_json::json!({"stats": report::stats_json(&program, &loaded.source, &rep.stats)});
+            let v = serde_json::json!({"stats": report::stats_json(&program, &loaded.sources, &rep.stats)});
             crate::write_out(None, &format!("{v}\n"))?;
         }
         live::Format::Table => {

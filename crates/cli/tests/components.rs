@@ -251,3 +251,51 @@ fn the_plain_system_is_its_first_configuration() {
     assert_eq!(strip(&a), strip(&b));
     assert_ne!(strip(&a), Value::Null);
 }
+
+#[test]
+fn dead_design_in_an_imported_file_names_that_file_and_line() {
+    let (code, out, err) = run(&[
+        "verify",
+        "--engine",
+        "explicit",
+        "--json",
+        "tests/components/dead_imported.sc",
+    ]);
+    assert_eq!(code, 0, "{err}");
+    let v: Value = serde_json::from_str(&out).unwrap_or_else(|e| panic!("{e}: {out}"));
+    // By hand (tests/components/lib/latch.sc): `state Never;` is line 8, `Never` at column 9;
+    // the transition `on [false] -> Never;` of line 7 starts at column 14.
+    let dead: Vec<(String, String, u64, u64)> = v["stats"]["dead"]
+        .as_array()
+        .map(|a| {
+            a.iter()
+                .map(|d| {
+                    (
+                        d["label"].as_str().unwrap_or("?").to_string(),
+                        d["file"].as_str().unwrap_or("?").to_string(),
+                        d["line"].as_u64().unwrap_or(0),
+                        d["col"].as_u64().unwrap_or(0),
+                    )
+                })
+                .collect()
+        })
+        .unwrap_or_default();
+    let lib = "tests/components/lib/latch.sc".to_string();
+    assert_eq!(
+        dead,
+        vec![
+            ("Never".to_string(), lib.clone(), 8, 9),
+            ("On -> Never".to_string(), lib, 7, 14),
+        ]
+    );
+    let (_, text, _) = run(&[
+        "verify",
+        "--engine",
+        "explicit",
+        "tests/components/dead_imported.sc",
+    ]);
+    assert!(
+        text.contains("l: Never (tests/components/lib/latch.sc:8:9)"),
+        "{text}"
+    );
+}
