@@ -102,7 +102,7 @@ pub fn check(file: &ast::File) -> (Model, Vec<Diagnostic>) {
     let mut skeletons = Vec::new();
     for (id, c) in chart_asts.iter().enumerate() {
         let before = ck.sink.diags.len();
-        skeletons.push(chart::skeleton(&mut ck, c, model::ChartRole::Normal));
+        skeletons.push(chart::skeleton(&mut ck, c, model::ChartRole::of(c)));
         params::annotate(&mut ck.sink.diags, before, origin(id), &c.name.name);
     }
     let mut charts: Vec<Chart> = Vec::new();
@@ -167,12 +167,14 @@ pub fn check(file: &ast::File) -> (Model, Vec<Diagnostic>) {
             instances: vec![Instance {
                 name: c.name.name.clone(),
                 chart: id as ChartId,
+                index: None,
                 span: c.name.span,
             }],
             connections: Vec::new(),
             order: vec![0],
             assumes: Vec::new(),
             properties,
+            requirements: Vec::new(),
             span: c.name.span,
         });
     }

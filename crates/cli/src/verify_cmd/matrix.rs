@@ -5,25 +5,18 @@
 use crate::load::Loaded;
 use anyhow::{bail, Result};
 use statecheck_model::components::CONFIG_SEP;
-use statecheck_syntax::ast;
 use std::time::Instant;
 
-/// The configurations the system `base` declares, in order.
+/// The configurations the system `base` declares, in order: the model holds one system
+/// `base:NAME` per configuration (`statecheck_model::components`).
 pub fn configurations(loaded: &Loaded, base: &str) -> Vec<String> {
+    let prefix = format!("{base}{CONFIG_SEP}");
     loaded
-        .file
-        .items
+        .model
+        .systems
         .iter()
-        .find_map(|i| match i {
-            ast::Item::System(s) if s.name.name == base => Some(
-                s.configurations
-                    .iter()
-                    .map(|c| c.name.name.clone())
-                    .collect(),
-            ),
-            _ => None,
-        })
-        .unwrap_or_default()
+        .filter_map(|s| s.name.strip_prefix(&prefix).map(str::to_string))
+        .collect()
 }
 
 /// The name of the system `base` in configuration `config`; a usage error when `base` has
