@@ -211,6 +211,19 @@ fn config_selects_one_configuration() {
     // 3 states each; `ideal` has the 10 values of raw per tick, `faulty` also `stuck`: 20.
     assert_eq!(one("ideal"), (0, 30));
     assert_eq!(one("faulty"), (1, 60));
+    // The counterexample says which configuration it belongs to.
+    let (_, text, _) = run(&[
+        "verify",
+        "--engine",
+        "explicit",
+        "--config",
+        "faulty",
+        "tests/components/sensors.sc",
+    ]);
+    assert!(
+        text.contains("counterexample for `alarm_follows` in configuration `faulty`"),
+        "{text}"
+    );
     let (code, _, err) = run(&["verify", "--config", "nope", "tests/components/sensors.sc"]);
     assert_eq!(code, 2);
     assert!(

@@ -268,6 +268,12 @@ pub fn tail(
         explicit_stats(&mut out, loaded, p, &rep.stats);
     }
     let views = Views::new(&loaded.model, p);
+    // A configuration's system is `System:configuration` (docs/components.md).
+    let config = p
+        .name
+        .split_once(statecheck_model::components::CONFIG_SEP)
+        .map(|(_, c)| format!(" in configuration `{c}`"))
+        .unwrap_or_default();
     for (r, c) in rep.results.iter().zip(cexs) {
         let what = if r.verdict == Verdict::Reachable {
             "witness"
@@ -282,7 +288,7 @@ pub fn tail(
                 };
                 let _ = writeln!(
                     out,
-                    "\n{what} for `{}` ({}, {} ticks, decided at tick {}){at}",
+                    "\n{what} for `{}`{config} ({}, {} ticks, decided at tick {}){at}",
                     r.name,
                     r.kind.as_str(),
                     r.depth,
