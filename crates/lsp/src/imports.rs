@@ -111,7 +111,10 @@ pub(crate) fn program(uri: &lt::Uri, text: &str, file: &ast::File) -> Option<Pro
 /// The identifier around byte `offset` of `text`.
 pub(crate) fn word_at(text: &str, offset: usize) -> Option<&str> {
     let is_word = |c: char| c.is_ascii_alphanumeric() || c == '_';
-    let offset = offset.min(text.len());
+    let mut offset = offset.min(text.len());
+    while !text.is_char_boundary(offset) {
+        offset -= 1;
+    }
     let start = text[..offset]
         .char_indices()
         .rev()
