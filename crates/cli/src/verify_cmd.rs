@@ -153,11 +153,7 @@ pub fn run(a: VerifyArgs) -> Result<u8> {
         });
     }
     let loaded = load::load(&a.model, false)?;
-    let mut sys = loaded.system(a.system.as_deref())?;
-    if let Some(config) = &a.config {
-        let base = sys.name.clone();
-        sys = loaded.system(Some(&matrix::system_name(&loaded, &base, config)?))?;
-    }
+    let sys = loaded.system_in(a.system.as_deref(), a.config.as_deref())?;
     if a.all_configs {
         let base = sys.name.clone();
         let check = options(&a, max_memory, timeout);

@@ -312,3 +312,32 @@ fn dead_design_in_an_imported_file_names_that_file_and_line() {
         "{text}"
     );
 }
+
+#[test]
+fn sim_runs_a_configuration() {
+    let dir =
+        std::env::temp_dir().join(format!("statecheck-components-sim-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).expect("temp dir");
+    let scn = dir.join("one.scn");
+    std::fs::write(&scn, "-\ns.raw = 1\n").expect("write scenario");
+    let scn = scn.to_string_lossy().into_owned();
+    let sim = |config: &str| {
+        run(&[
+            "sim",
+            "tests/components/sensors.sc",
+            "--config",
+            config,
+            "--scenario",
+            &scn,
+        ])
+    };
+    // By hand: raw = 1 in tick 1. `sensitive` (threshold 0) reports it present, so the alarm
+    // goes on while raw > 3 is false: `alarm_follows` is violated in tick 1 (exit 4); `ideal`
+    // (threshold 3) does not.
+    let (code, out, err) = sim("sensitive");
+    assert_eq!(code, 4, "{out}{err}");
+    assert!(err.contains("`alarm_follows` violated at tick 1"), "{err}");
+    let (code, out, err) = sim("ideal");
+    assert_eq!(code, 0, "{out}{err}");
+    let _ = std::fs::remove_dir_all(&dir);
+}

@@ -7,34 +7,6 @@ use anyhow::{bail, Result};
 use statecheck_model::components::CONFIG_SEP;
 use std::time::Instant;
 
-/// The configurations the system `base` declares, in order: the model holds one system
-/// `base:NAME` per configuration (`statecheck_model::components`).
-pub fn configurations(loaded: &Loaded, base: &str) -> Vec<String> {
-    let prefix = format!("{base}{CONFIG_SEP}");
-    loaded
-        .model
-        .systems
-        .iter()
-        .filter_map(|s| s.name.strip_prefix(&prefix).map(str::to_string))
-        .collect()
-}
-
-/// The name of the system `base` in configuration `config`; a usage error when `base` has
-/// no such configuration.
-pub fn system_name(loaded: &Loaded, base: &str, config: &str) -> Result<String> {
-    let all = configurations(loaded, base);
-    if all.is_empty() {
-        bail!("system `{base}` declares no configurations");
-    }
-    if !all.iter().any(|c| c == config) {
-        bail!(
-            "system `{base}` has no configuration `{config}`; it has: {}",
-            all.join(", ")
-        );
-    }
-    Ok(format!("{base}{CONFIG_SEP}{config}"))
-}
-
 /// One configuration's results.
 struct Row {
     config: String,
@@ -52,7 +24,7 @@ pub fn run(
     opts: &statecheck_verify::Options,
     json: bool,
 ) -> Result<u8> {
-    let configs = configurations(loaded, base);
+    let configs = loaded.configurations(base);
     if configs.is_empty() {
         bail!("system `{base}` declares no configurations: --all-configs needs some");
     }
