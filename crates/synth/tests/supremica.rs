@@ -232,3 +232,24 @@ fn errors_have_codes_and_positions() {
     let bad = xml.replace("initial=\"true\"", "initial=\"yes\"");
     assert_eq!(err(&bad).0, "E0721");
 }
+
+#[test]
+fn sc_names_are_identifiers_and_distinct() {
+    use statecheck_synth::supremica::idents::sc_names;
+    let is_ident = |s: &str| {
+        s.starts_with(|c: char| c.is_ascii_alphabetic() || c == '_')
+            && s.chars().all(|c| c.is_ascii_alphanumeric() || c == '_')
+            && s != "state"
+    };
+    let mut q = read(ODD).expect("reads");
+    q.events[1].name = "land_0".into(); // collides with the mapping of `land.0`
+    q.automata[1].locs[0] = "state".into(); // a keyword
+    let (r, renamed) = sc_names(&q, &is_ident);
+    let ev: Vec<&str> = r.events.iter().map(|e| e.name.as_str()).collect();
+    assert_eq!(ev, ["land_0_2", "land_0"]);
+    assert_eq!(r.automata[0].name, "Cat_0_");
+    assert_eq!(r.automata[0].locs, ["s0", "s_1"]);
+    assert_eq!(r.automata[1].locs, ["x_state"]);
+    assert_eq!(renamed.len(), 4);
+    assert_eq!(renamed[0].from, "land.0");
+}

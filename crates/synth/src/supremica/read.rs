@@ -15,6 +15,7 @@
 //! Errors carry a stable code (E0720–E0725) and the line:column of the offending element.
 
 use crate::problem::{Automaton, Event, EventId, Kind, Pred, Problem, NONE};
+use statecheck_base::Span;
 use std::collections::HashMap;
 use std::fmt;
 
@@ -29,6 +30,8 @@ pub struct XmlError {
     pub col: u32,
     /// What is wrong.
     pub message: String,
+    /// The bytes of the file it points at (the element's start tag, or one character).
+    pub span: Span,
 }
 
 impl fmt::Display for XmlError {
@@ -54,12 +57,15 @@ type R<T> = Result<T, XmlError>;
 
 impl<'d, 'i> Reader<'d, 'i> {
     fn err(&self, code: &'static str, node: roxmltree::Node, msg: impl Into<String>) -> XmlError {
-        let pos = self.doc.text_pos_at(node.range().start);
+        let r = node.range();
+        let pos = self.doc.text_pos_at(r.start);
+        let head = 1 + node.tag_name().name().len();
         XmlError {
             code,
             line: pos.row,
             col: pos.col,
             message: msg.into(),
+            span: Span::new(r.start, r.end.min(r.start + head).max(r.start)),
         }
     }
 
@@ -101,11 +107,14 @@ pub fn read(text: &str) -> Result<Problem, XmlError> {
     };
     let doc = roxmltree::Document::parse_with_options(text, opts).map_err(|e| {
         let pos = e.pos();
+        let at = offset(text, pos.row, pos.col);
+        let next = text[at..].chars().next().map_or(0, char::len_utf8);
         XmlError {
             code: "E0720",
             line: pos.row,
             col: pos.col,
             message: format!("malformed XML: {e}"),
+            span: Span::new(at, at + next),
         }
     })?;
     let rd = Reader { doc: &doc };
@@ -326,4 +335,20 @@ fn skipped(rd: &Reader, aut: roxmltree::Node) -> R<bool> {
             "the automaton has no `type` (Plant, Specification, Supervisor, Property)",
         )),
     }
+}
+
+/// The byte offset of 1-based `row`, `col` (in characters) in `text`, clamped to its end.
+fn offset(text: &str, row: u32, col: u32) -> usize {
+    let mut at = 0;
+    for _ in 1..row {
+        match text[at..].find('\n') {
+            Some(i) => at += i + 1,
+            None => return text.len(),
+        }
+    }
+    let line_end = text[at..].find('\n').map_or(text.len(), |i| at + i);
+    text[at..line_end]
+        .char_indices()
+        .nth(col.saturating_sub(1) as usize)
+        .map_or(line_end, |(i, _)| at + i)
 }
