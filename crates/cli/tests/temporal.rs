@@ -17,8 +17,13 @@ fn model() -> String {
 
 /// `verify --json` of one system; every lasso replayed. Returns name -> verdict.
 fn verify(system: &str) -> Vec<(String, String)> {
+    verify_on(system, "auto")
+}
+
+/// [`verify`] with `--engine engine`.
+fn verify_on(system: &str, engine: &str) -> Vec<(String, String)> {
     let dir = std::env::temp_dir().join(format!(
-        "statecheck-temporal-{}-{system}",
+        "statecheck-temporal-{}-{system}-{engine}",
         std::process::id()
     ));
     let _ = std::fs::remove_dir_all(&dir);
@@ -29,6 +34,8 @@ fn verify(system: &str) -> Vec<(String, String)> {
             "--system",
             system,
             "--json",
+            "--engine",
+            engine,
             "--cex-dir",
         ])
         .arg(&dir)
@@ -140,6 +147,50 @@ fn compassion() {
         &[("past_one", "proved"), ("reaches2", "violated")],
     );
     check("NoCompassion", &[("past_one", "violated")]);
+}
+
+/// The SAT engines alone (liveness-to-safety, k-liveness) give the hand-derived LTL verdicts
+/// above (BMC: `bounded` for the properties that hold), leave CTL and `deadlock_free` to the
+/// explicit engine (`unknown`), and their lassos replay in `sim` (exit 4).
+#[test]
+fn sat_engines_decide_ltl() {
+    let ltl: &[(&str, &[(&str, bool)])] = &[
+        (
+            "Free",
+            &[
+                ("reaches3", false),
+                ("bounded", true),
+                ("gf_zero", false),
+                ("resets", true),
+            ],
+        ),
+        ("FairInc", &[("reaches3", false), ("gf_inc", true)]),
+        ("NoReset", &[("reaches3", true), ("stays3", true)]),
+        ("Compassion", &[("past_one", true), ("reaches2", false)]),
+        ("NoCompassion", &[("past_one", false)]),
+        ("Deadlock", &[("never2", true), ("reaches2", false)]),
+    ];
+    for engine in ["ic3", "bmc"] {
+        for (system, props) in ltl {
+            let got = verify_on(system, engine);
+            for (name, holds) in *props {
+                let v = got.iter().find(|(n, _)| n == name).map(|(_, v)| v.as_str());
+                let want = match (holds, engine) {
+                    (false, _) => "violated",
+                    (true, "bmc") => "bounded",
+                    (true, _) => "proved",
+                };
+                assert_eq!(v, Some(want), "{engine}: {system}.{name}: {got:?}");
+            }
+            for (name, v) in &got {
+                if ["can_reach3", "ax_one", "eg_low", "zero", "deadlock_free"]
+                    .contains(&name.as_str())
+                {
+                    assert_eq!(v, "unknown", "{engine}: {system}.{name}");
+                }
+            }
+        }
+    }
 }
 
 #[test]
