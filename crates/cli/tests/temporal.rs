@@ -265,3 +265,73 @@ fn linear_drive_liveness() {
     assert_eq!(verdict("can_run").as_deref(), Some("proved"));
     assert_eq!(verdict("deadlock_free").as_deref(), Some("proved"));
 }
+
+/// `export aiger` of an `ltl` property writes an AIGER 1.9 justice property; `verify FILE.aig`
+/// decides it with the hand-derived verdict (Free above); with compassion the export is
+/// refused (AIGER cannot state it).
+#[test]
+fn ltl_through_aiger_justice() {
+    let dir = std::env::temp_dir().join(format!("statecheck-temporal-aig-{}", std::process::id()));
+    let _ = std::fs::create_dir_all(&dir);
+    for (system, prop, want, code) in [
+        ("Free", "reaches3", "violated", 1),
+        ("Free", "gf_zero", "violated", 1),
+        ("Free", "resets", "proved", 0),
+        ("NoReset", "stays3", "proved", 0),
+        ("FairInc", "reaches3", "violated", 1),
+    ] {
+        let f = dir.join(format!("{system}_{prop}.aig"));
+        let out = Command::new(BIN)
+            .args([
+                "export",
+                "aiger",
+                &model(),
+                "--system",
+                system,
+                "--property",
+                prop,
+                "-o",
+            ])
+            .arg(&f)
+            .output()
+            .expect("export runs");
+        assert_eq!(
+            out.status.code(),
+            Some(0),
+            "{}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        let head = std::fs::read(&f).expect("written");
+        let header =
+            String::from_utf8_lossy(&head[..head.iter().position(|&b| b == b'\n').unwrap_or(0)])
+                .to_string();
+        // M I L O A B C J F: one justice property, no fairness section entries.
+        assert!(header.ends_with(" 1 0"), "{header}");
+        let out = Command::new(BIN)
+            .args(["verify", "--json"])
+            .arg(&f)
+            .output()
+            .expect("verify runs");
+        let v: Value = serde_json::from_slice(&out.stdout).expect("JSON");
+        assert_eq!(v["results"][0]["kind"], "justice");
+        assert_eq!(v["results"][0]["verdict"], want, "{system}.{prop}: {v}");
+        assert_eq!(out.status.code(), Some(code));
+    }
+    let out = Command::new(BIN)
+        .args([
+            "export",
+            "aiger",
+            &model(),
+            "--system",
+            "Compassion",
+            "--property",
+            "past_one",
+            "-o",
+        ])
+        .arg(dir.join("c.aig"))
+        .output()
+        .expect("export runs");
+    assert_ne!(out.status.code(), Some(0));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("compassion"));
+    let _ = std::fs::remove_dir_all(&dir);
+}

@@ -16,7 +16,7 @@ mod single;
 mod temporal;
 
 pub use cancel::{Cancel, CancelReason};
-pub use circuit::{decide_circuit, race};
+pub use circuit::{decide_circuit, race, race_justice};
 pub use error::{Error, ErrorKind};
 pub use statecheck_explicit::{Options as ExplicitOptions, Progress, Report, Stats};
 pub use statecheck_ir::verdict::{PropKind, PropResult, Verdict};

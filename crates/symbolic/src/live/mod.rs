@@ -89,6 +89,111 @@ pub fn decide(p: &Program, bl: &Blasted, t: usize, method: Method, limits: &Limi
     }
 }
 
+/// The answer of a liveness check on a [`Justice`] circuit.
+#[derive(Clone, Debug)]
+pub enum LiveOutcome {
+    /// A fair lasso: frames `0..trace.inputs.len()`, after which the state at the start of
+    /// frame `loop_start` recurs (on the latches of the justice circuit's cone of influence).
+    Lasso {
+        /// The frames' inputs (over the justice circuit's inputs, then `save`).
+        trace: crate::engine::Trace,
+        /// The loop's first frame.
+        loop_start: usize,
+    },
+    /// No fair run exists: the property holds.
+    Proved,
+    /// No lasso of at most this many frames.
+    Bounded(usize),
+    /// A limit stopped the check; the text says which.
+    Unknown(String),
+}
+
+/// Decide `j` by `method`.
+pub fn check_justice(j: &Justice, method: Method, limits: &Limits) -> LiveOutcome {
+    match method {
+        Method::KLive => {
+            if !j.compassion.is_empty() {
+                return LiveOutcome::Unknown(
+                    "k-liveness does not handle compassion (`fair p => q`)".into(),
+                );
+            }
+            let mut k = 0;
+            loop {
+                if let Some(why) = limits.expired() {
+                    return LiveOutcome::Unknown(why);
+                }
+                if k > MAX_K {
+                    return LiveOutcome::Unknown(format!("k-liveness reached k = {MAX_K}"));
+                }
+                let aig = klive(j, k);
+                match Engine::Ic3.run(&aig, limits) {
+                    Outcome::Proved(_) => return LiveOutcome::Proved,
+                    Outcome::Reached(_) => k += 1,
+                    Outcome::Bounded(d) => return LiveOutcome::Bounded(d),
+                    Outcome::Unknown(why) => return LiveOutcome::Unknown(why),
+                }
+            }
+        }
+        Method::L2s(engine) => {
+            let l = l2s(j);
+            match run_reduced(engine, &l.aig, 0, &Reductions::new(1), limits) {
+                Outcome::Proved(_) => LiveOutcome::Proved,
+                Outcome::Bounded(k) => LiveOutcome::Bounded(k),
+                Outcome::Unknown(why) => LiveOutcome::Unknown(why),
+                Outcome::Reached(mut trace) => {
+                    // The last frame only closes the loop (its state is the saved one).
+                    trace.inputs.pop();
+                    let loop_start = trace
+                        .inputs
+                        .iter()
+                        .position(|f| f.get(l.save).copied().unwrap_or(false))
+                        .unwrap_or(0);
+                    LiveOutcome::Lasso { trace, loop_start }
+                }
+            }
+        }
+    }
+}
+
+impl Justice {
+    /// Justice property `k` of an AIGER circuit, with the file's fairness constraints as
+    /// further justice signals (AIGER 1.9: a run violates it when all of them hold
+    /// infinitely often).
+    pub fn from_aiger(aig: &crate::aig::Aig, k: usize) -> Justice {
+        let mut g = aig.clone();
+        let mut justice = aig.justice.get(k).cloned().unwrap_or_default();
+        justice.extend(aig.fairness.iter().copied());
+        if justice.is_empty() {
+            justice.push(crate::aig::Lit::TRUE);
+        }
+        g.bad.clear();
+        g.bad_names.clear();
+        g.justice.clear();
+        g.justice_names.clear();
+        g.fairness.clear();
+        Justice {
+            aig: g,
+            justice,
+            compassion: Vec::new(),
+        }
+    }
+
+    /// The circuit as one AIGER justice property (the fairness constraints among its
+    /// signals); `None` with compassion, which AIGER cannot state.
+    pub fn to_aiger(&self, name: &str) -> Option<crate::aig::Aig> {
+        if !self.compassion.is_empty() {
+            return None;
+        }
+        let mut g = self.aig.clone();
+        g.bad.clear();
+        g.bad_names.clear();
+        g.justice = vec![self.justice.clone()];
+        g.justice_names = vec![Some(name.to_string())];
+        g.fairness.clear();
+        Some(g.reduced())
+    }
+}
+
 /// Run `method` on `j`, filling `r`; the reason of an `unknown` verdict.
 fn run(
     p: &Program,
@@ -98,73 +203,35 @@ fn run(
     limits: &Limits,
     r: &mut PropResult,
 ) -> Option<String> {
-    match method {
-        Method::KLive => {
-            if !j.compassion.is_empty() {
-                return Some("k-liveness does not handle compassion (`fair p => q`)".into());
-            }
-            let mut k = 0;
-            loop {
-                if let Some(why) = limits.expired() {
-                    return Some(why);
-                }
-                if k > MAX_K {
-                    return Some(format!("k-liveness reached k = {MAX_K}"));
-                }
-                let aig = klive(j, k);
-                match Engine::Ic3.run(&aig, limits) {
-                    Outcome::Proved(_) => {
-                        r.verdict = Verdict::Proved;
-                        return None;
-                    }
-                    Outcome::Reached(_) => k += 1,
-                    Outcome::Bounded(_) => return Some("depth bound".into()),
-                    Outcome::Unknown(why) => return Some(why),
-                }
-            }
+    match check_justice(j, method, limits) {
+        LiveOutcome::Proved => {
+            r.verdict = Verdict::Proved;
+            None
         }
-        Method::L2s(engine) => {
-            let l = l2s(j);
-            match run_reduced(engine, &l.aig, 0, &Reductions::new(1), limits) {
-                Outcome::Proved(_) => {
-                    r.verdict = Verdict::Proved;
-                    None
+        LiveOutcome::Bounded(k) => {
+            r.verdict = Verdict::Bounded;
+            r.depth = k as u64;
+            None
+        }
+        LiveOutcome::Unknown(why) => Some(why),
+        LiveOutcome::Lasso { trace, loop_start } => {
+            r.verdict = Verdict::Violated;
+            let vectors = input_vectors(bl, &trace);
+            match full_lasso(p, &vectors, loop_start) {
+                Some((ticks, k)) => {
+                    r.depth = ticks.len() as u64;
+                    r.loop_start = Some(k as u64);
+                    r.counterexample = Some(ticks);
                 }
-                Outcome::Bounded(k) => {
-                    r.verdict = Verdict::Bounded;
-                    r.depth = k as u64;
-                    None
-                }
-                Outcome::Unknown(why) => Some(why),
-                Outcome::Reached(trace) => {
-                    let frames = trace.inputs.len().saturating_sub(1);
-                    let save = trace
-                        .inputs
-                        .iter()
-                        .position(|f| f.get(l.save).copied().unwrap_or(false))
-                        .unwrap_or(0);
-                    let mut vectors = input_vectors(bl, &trace);
-                    vectors.truncate(frames);
-                    match full_lasso(p, &vectors, save) {
-                        Some((ticks, k)) => {
-                            r.verdict = Verdict::Violated;
-                            r.depth = ticks.len() as u64;
-                            r.loop_start = Some(k as u64);
-                            r.counterexample = Some(ticks);
-                            None
-                        }
-                        None => {
-                            r.verdict = Verdict::Violated;
-                            r.note = Some(
-                                "the lasso found does not close on the whole state within the \
-                                 replay bound: no counterexample"
-                                    .into(),
-                            );
-                            None
-                        }
-                    }
+                None => {
+                    r.note = Some(
+                        "the lasso found does not close on the whole state within the replay \
+                         bound: no counterexample"
+                            .into(),
+                    );
                 }
             }
+            None
         }
     }
 }
@@ -219,4 +286,16 @@ pub fn full_lasso(p: &Program, ticks: &[Vec<i64>], k: usize) -> Option<(Vec<Vec<
         seen.insert(m.state().to_vec(), pass);
     }
     None
+}
+
+/// The justice problem of `p`'s temporal property `name` (blasted as `bl`): `None` when `p`
+/// has no temporal property of that name; `Err` with the reason when it is not LTL or its
+/// automaton is too large.
+pub fn justice_of(p: &Program, bl: &Blasted, name: &str) -> Option<Result<Justice, String>> {
+    let t = p.temporal.iter().find(|t| t.name == name)?;
+    Some(match &t.formula {
+        TemporalFormula::Ctl(_) => Err(CTL_UNSUPPORTED.to_string()),
+        TemporalFormula::Ltl(f) => monitor(bl, f, &p.fairness)
+            .map_err(|_| "the formula's automaton is too large".to_string()),
+    })
 }
