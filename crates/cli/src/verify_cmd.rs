@@ -182,9 +182,7 @@ pub fn run(a: VerifyArgs) -> Result<u8> {
     if explicit {
         report::announce_branching(&program, &opts, a.json || a.json_lines || a.quiet);
     }
-    let names: Vec<String> = statecheck_ir::verdict::select(&program, &a.properties)
-        .map(|v| v.into_iter().map(|p| p.name).collect())
-        .unwrap_or_default();
+    let names: Vec<String> = statecheck_verify::row_names(&program, &a.properties);
     let format = if a.json {
         live::Format::Json
     } else if a.json_lines {
