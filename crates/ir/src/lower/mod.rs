@@ -235,7 +235,7 @@ impl<'m> Lowerer<'m> {
             fairness,
             started,
             n_locals: self.locals.len(),
-            code: std::sync::OnceLock::new(),
+            run_cache: Default::default(),
         }
     }
 

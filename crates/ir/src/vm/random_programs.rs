@@ -392,7 +392,7 @@ fn random_program(seed: u64) -> Program {
         fairness: Vec::new(),
         started: 0,
         n_locals: g.n_locals as usize,
-        code: std::sync::OnceLock::new(),
+        run_cache: Default::default(),
     }
 }
 
