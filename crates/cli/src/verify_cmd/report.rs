@@ -136,6 +136,7 @@ fn dead_json(p: &Program, source: &str, dead: &[u32]) -> Value {
     let idx = LineIndex::new(source);
     dead.iter()
         .filter_map(|&c| p.covers.get(c as usize))
+        .filter(|c| !c.expected_unreached)
         .map(|c| {
             let (line, col) = idx.line_col(c.span.start);
             json!({"instance": p.instances[c.instance as usize].name, "kind": cover_kind(&c.kind), "label": c.label, "line": line, "col": col})
@@ -310,7 +311,7 @@ fn explicit_stats(out: &mut String, loaded: &Loaded, p: &Program, s: &Stats) {
     if let Some(dead) = &s.dead {
         let idx = LineIndex::new(&loaded.source);
         for &c in dead {
-            let Some(c) = p.covers.get(c as usize) else {
+            let Some(c) = p.covers.get(c as usize).filter(|c| !c.expected_unreached) else {
                 continue;
             };
             let (line, col) = idx.line_col(c.span.start);
