@@ -142,8 +142,8 @@ impl TraceView {
     }
 
     /// Keep only the columns with a variable name matched by one of `patterns` (globs: `*`
-    /// any characters, `?` one; each may list several separated by commas). Returns the
-    /// patterns that matched nothing.
+    /// any characters, `?` one; each may list several separated by commas; no pattern keeps
+    /// every column). Returns the patterns that matched nothing.
     pub fn select(&mut self, patterns: &[String]) -> Vec<String> {
         let globs: Vec<&str> = patterns
             .iter()
@@ -151,6 +151,9 @@ impl TraceView {
             .map(str::trim)
             .filter(|g| !g.is_empty())
             .collect();
+        if globs.is_empty() {
+            return Vec::new();
+        }
         let hit = |c: &Column| globs.iter().any(|g| c.names.iter().any(|n| glob(g, n)));
         let unmatched = globs
             .iter()

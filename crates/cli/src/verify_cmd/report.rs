@@ -231,7 +231,7 @@ impl Columns {
 
 /// What follows the verdict table in the human-readable report: statistics, dead design
 /// and counterexample tables (nothing under `--quiet`). `explicit`: the explicit engine ran
-/// alone (its statistics are shown).
+/// alone (its statistics are shown). `show`: the `--show` patterns choosing the columns.
 pub fn tail(
     loaded: &Loaded,
     p: &Program,
@@ -239,6 +239,7 @@ pub fn tail(
     cexs: &[Option<Cex>],
     quiet: bool,
     explicit: bool,
+    show: &[String],
 ) -> String {
     let mut out = String::new();
     if quiet {
@@ -247,7 +248,10 @@ pub fn tail(
     if explicit {
         explicit_stats(&mut out, loaded, p, &rep.stats);
     }
-    let views = Views::new(&loaded.model, p);
+    let mut views = Views::new(&loaded.model, p);
+    // The patterns were checked before the run (`table::show`).
+    let _unmatched = views.select(show);
+    let width = table::terminal_width();
     for (r, c) in rep.results.iter().zip(cexs) {
         let what = if r.verdict == Verdict::Reachable {
             "witness"
@@ -268,7 +272,7 @@ pub fn tail(
                     r.depth,
                     c.tick
                 );
-                out.push_str(&table::render(p, &views, &c.trace));
+                out.push_str(&table::render(p, &views, &c.trace, width));
                 if let Some(e) = &r.error {
                     let _ = writeln!(
                         out,
