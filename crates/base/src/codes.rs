@@ -85,7 +85,7 @@ pub const CODES: &[CodeInfo] = &[
     code("E0161", "LTL operator in a CTL formula", "In a `ctl` formula every temporal operator needs a path quantifier: `AG`, `EF`, `A[p U q]`, ….", "properties.md"),
     code("E0131", "transition leaves the chart's top level", "The lowering refuses a transition whose source and target lie in different top-level regions, or that would leave the chart.", "semantics.md"),
     code("W0201", "no initial value", "A variable without `= value` starts at its type's default (the lowest value, `false`, the first literal); say it explicitly.", "lints.md"),
-    code("W0202", "instance connected to itself", "The input reads the instance's own output as of the previous tick.", "lints.md"),
+    code("W0202", "instance connected to itself", "The input reads the instance's own output slot: a value the instance wrote earlier in the same step (an earlier region, an entry or transition action) is seen in that tick; otherwise the previous tick's value. Usually a mistake; a `local` variable says the same more clearly (`tests/semantics/self_connect`).", "lints.md"),
     code("W0301", "state with no incoming transition", "No transition enters the state and it is not its parent's `initial`: it can never be active.", "lints.md"),
     code("W0302", "state isolated from its level's initial state", "The state cannot be reached from the `initial` state of its level.", "lints.md"),
     code("W0303", "two transitions with the same `priority`", "Two transitions of one state have the same explicit priority; their order is then textual, which the priority was meant to override.", "lints.md"),

@@ -129,8 +129,8 @@ impl TraceView {
         }
         let var_names: Vec<(String, SlotId)> =
             vars.iter().map(|v| (v.name.clone(), v.slot)).collect();
-        let var_columns = columns(p, &var_names);
-        let event_columns = columns(p, &events);
+        let var_columns = columns(model, p, &var_names);
+        let event_columns = columns(model, p, &events);
         TraceView {
             instances,
             vars,
@@ -204,7 +204,7 @@ impl TraceView {
 
 /// One column per slot among `named` (in the order of their first variable), named from the
 /// variable that owns the slot (the writer of a connection) followed by the others.
-fn columns(p: &Program, named: &[(String, SlotId)]) -> Vec<Column> {
+fn columns(model: &Model, p: &Program, named: &[(String, SlotId)]) -> Vec<Column> {
     let mut out: Vec<Column> = Vec::new();
     for (k, (name, slot)) in named.iter().enumerate() {
         if let Some(c) = out.iter_mut().find(|c| named[c.index].1 == *slot) {
@@ -224,14 +224,17 @@ fn columns(p: &Program, named: &[(String, SlotId)]) -> Vec<Column> {
         let slot = named[c.index].1;
         // The owner of the slot is the writer; the others read it through a connection.
         let owner = match p.slots.get(slot as usize).map(|s| &s.role) {
-            Some(SlotRole::Var { instance, .. }) => p
-                .instances
-                .get(*instance as usize)
-                .map(|i| format!("{}.", i.name)),
+            Some(SlotRole::Var { instance, var }) => {
+                p.instances.get(*instance as usize).and_then(|i| {
+                    let chart = model.charts.get(i.chart as usize)?;
+                    let v = chart.vars.get(*var as usize)?;
+                    Some(format!("{}.{}", i.name, v.name))
+                })
+            }
             _ => None,
         };
         let pos = owner
-            .and_then(|o| c.names.iter().position(|n| n.starts_with(&o)))
+            .and_then(|o| c.names.iter().position(|n| *n == o))
             .unwrap_or(0);
         let mut names = c.names.clone();
         let writer = names.remove(pos);

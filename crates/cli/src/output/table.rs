@@ -267,12 +267,23 @@ pub fn state_line(p: &Program, views: &Views, slots: &[i64]) -> String {
     parts.join(", ")
 }
 
-/// Drop the instance prefix when there is only one instance.
-fn short<'a>(views: &Views, name: &'a str) -> &'a str {
-    if views.instances.len() == 1 {
-        name.split_once('.').map_or(name, |(_, v)| v)
-    } else {
-        name
+/// Drop the instance prefix when there is only one instance (from every name of a
+/// connection's column: `w.o->w.i` is `o->i`).
+fn short(views: &Views, name: &str) -> String {
+    match views.instances.as_slice() {
+        [only] => {
+            let prefix = format!("{}.", only.name);
+            name.split("->")
+                .map(|side| {
+                    side.split(',')
+                        .map(|n| n.strip_prefix(&prefix).unwrap_or(n))
+                        .collect::<Vec<_>>()
+                        .join(",")
+                })
+                .collect::<Vec<_>>()
+                .join("->")
+        }
+        _ => name.to_string(),
     }
 }
 
