@@ -17,6 +17,9 @@ pub struct SimArgs {
     /// The system (or chart) to simulate.
     #[arg(long)]
     system: Option<String>,
+    /// The system's configuration (`configuration NAME { … }`, docs/components.md).
+    #[arg(long, value_name = "NAME")]
+    config: Option<String>,
     /// A scenario file: the inputs per tick (`-`: standard input).
     #[arg(long, conflicts_with = "random")]
     scenario: Option<String>,
@@ -61,7 +64,7 @@ pub struct SimArgs {
 /// Run the command; returns the exit code.
 pub fn run(a: SimArgs) -> Result<u8> {
     let loaded = load::load(&a.model, false)?;
-    let sys = loaded.system(a.system.as_deref())?;
+    let sys = loaded.system_in(a.system.as_deref(), a.config.as_deref())?;
     let program = loaded.lower(sys)?;
     let opts = Options {
         coverage: a.coverage.is_some(),
