@@ -283,6 +283,10 @@ pub struct Cover {
     pub label: String,
     /// Where it was written.
     pub span: Span,
+    /// True when the item is meant never to be covered: an observer's `error` state
+    /// (`Chart::is_observer_error`) and a transition whose every target is one. Reports of
+    /// dead design and of coverage leave such items out.
+    pub expected_unreached: bool,
 }
 
 /// Per-instance layout: which slot holds what.

@@ -372,6 +372,7 @@ fn random_program(seed: u64) -> Program {
             kind: CoverKind::State(k),
             label: format!("cover {k}"),
             span: Span::default(),
+            expected_unreached: false,
         })
         .collect();
     Program {
