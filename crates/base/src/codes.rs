@@ -33,7 +33,8 @@ const fn code(
 }
 
 /// Every code: errors of the parser (E00xx) and of the checker (E01xx), warnings of the
-/// checker (W02xx) and of the design-rule lints (W03xx), errors of synthesis (E07xx).
+/// checker (W02xx) and of the design-rule lints (W03xx), errors of synthesis (E07xx), of
+/// scenario files (E08xx) and of external tools (E09xx).
 pub const CODES: &[CodeInfo] = &[
     code("E0001", "unexpected character", "A character that cannot start a token (such as `@`, `$`, a `#` comment or a quoted string from another language) was skipped. Comments are `// …` or `/* … */`; the language has no strings.", "grammar.md"),
     code("E0002", "unterminated block comment", "A `/*` comment is never closed and runs to the end of the file. Close it with `*/`; block comments do not nest.", "grammar.md"),
@@ -92,7 +93,7 @@ pub const CODES: &[CodeInfo] = &[
     code("E0161", "LTL operator in a CTL formula", "In a `ctl` formula every temporal operator needs a path quantifier: `AG`, `EF`, `A[p U q]`, ….", "properties.md"),
     code("E0131", "transition leaves the chart's top level", "The lowering refuses a transition whose source and target lie in different top-level regions, or that would leave the chart.", "semantics.md"),
     code("W0201", "no initial value", "A variable without `= value` starts at its type's default (the lowest value, `false`, the first literal); say it explicitly.", "lints.md"),
-    code("W0202", "instance connected to itself", "The input reads the instance's own output as of the previous tick.", "lints.md"),
+    code("W0202", "instance connected to itself", "The input reads the instance's own output slot: a value the instance wrote earlier in the same step (an earlier region, an entry or transition action) is seen in that tick; otherwise the previous tick's value. Usually a mistake; a `local` variable says the same more clearly (`tests/semantics/self_connect`).", "lints.md"),
     code("W0301", "state with no incoming transition", "No transition enters the state and it is not its parent's `initial`: it can never be active.", "lints.md"),
     code("W0302", "state isolated from its level's initial state", "The state cannot be reached from the `initial` state of its level.", "lints.md"),
     code("W0303", "two transitions with the same `priority`", "Two transitions of one state have the same explicit priority; their order is then textual, which the priority was meant to override.", "lints.md"),
@@ -133,6 +134,8 @@ pub const CODES: &[CodeInfo] = &[
     code("E0808", "scenario: value of the wrong type", "A `bool` takes `true` or `false` (not `1` or `0`), an enum one of its literals, an integer a decimal, hex or binary literal.", "language.md"),
     code("E0810", "scenario: misplaced `loop:`", "A scenario has at most one `loop:` line; it follows the first tick and precedes at least one tick (tick 0 only initialises).", "language.md"),
     code("E0809", "scenario: too long", "The scenario would expand (with its `* N` repeats) to more ticks than a run may have.", "language.md"),
+    code("E0901", "Graphviz not found", "`statecheck dot --svg` runs Graphviz's `dot -Tsvg`, which is not installed or not on `PATH` (install the `graphviz` package, or drop `--svg` to write DOT text). Exit code 2.", "tools.md"),
+    code("E0902", "Graphviz failed", "Graphviz's `dot -Tsvg` exited with an error on the drawing; its message is shown. Exit code 2.", "tools.md"),
 ];
 
 /// The entry of a code (case-insensitive), if any.

@@ -55,6 +55,10 @@ pub struct SimArgs {
     /// Print nothing but errors (and the requested files).
     #[arg(long, short)]
     quiet: bool,
+    /// Show only these variables and events in the table: globs over `instance.name` (`*`
+    /// any characters, `?` one), comma-separated or repeated. JSON, CSV and VCD are unchanged.
+    #[arg(long, value_name = "PATTERN")]
+    show: Vec<String>,
 }
 
 /// Run the command; returns the exit code.
@@ -67,7 +71,9 @@ pub fn run(a: SimArgs) -> Result<u8> {
         no_trace: true,
         keep_going: a.keep_going,
     };
-    let views = Views::new(&loaded.model, &program);
+    let mut views = Views::new(&loaded.model, &program);
+    output::table::show(&mut views, &a.show)?;
+    let views = views;
     let format = if a.json {
         Format::Json
     } else if a.csv {

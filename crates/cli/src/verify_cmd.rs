@@ -90,6 +90,10 @@ pub struct VerifyArgs {
     /// Print only the verdict table (no statistics, counterexample tables or progress).
     #[arg(long, short)]
     quiet: bool,
+    /// Show only these variables and events in counterexample tables: globs over
+    /// `instance.name` (`*` any characters, `?` one), comma-separated or repeated.
+    #[arg(long, value_name = "PATTERN")]
+    show: Vec<String>,
     /// Write each counterexample or witness as a scenario file `DIR/PROPERTY.scn`.
     #[arg(long, value_name = "DIR")]
     cex_dir: Option<String>,
@@ -169,6 +173,10 @@ pub fn run(a: VerifyArgs) -> Result<u8> {
         return matrix::run(&loaded, &base, &vopts, a.json);
     }
     let program = loaded.lower(sys)?;
+    crate::output::table::show(
+        &mut statecheck_ir::view::TraceView::new(&loaded.model, &program),
+        &a.show,
+    )?;
     if let Some(cf) = &a.check_certificate {
         let (aig, name) = symbolic::model_problem(&program, &a.properties)?;
         return symbolic::check_certificate(&aig, &name, cf);
@@ -182,9 +190,7 @@ pub fn run(a: VerifyArgs) -> Result<u8> {
     if explicit {
         report::announce_branching(&program, &opts, a.json || a.json_lines || a.quiet);
     }
-    let names: Vec<String> = statecheck_ir::verdict::select(&program, &a.properties)
-        .map(|v| v.into_iter().map(|p| p.name).collect())
-        .unwrap_or_default();
+    let names: Vec<String> = statecheck_verify::row_names(&program, &a.properties);
     let format = if a.json {
         live::Format::Json
     } else if a.json_lines {
@@ -242,7 +248,7 @@ pub fn run(a: VerifyArgs) -> Result<u8> {
             crate::write_out(None, &format!("{v}\n"))?;
         }
         live::Format::Table => {
-            let t = report::tail(&loaded, &program, rep, &cexs, a.quiet, explicit);
+            let t = report::tail(&loaded, &program, rep, &cexs, a.quiet, explicit, &a.show);
             crate::write_out(None, &t)?;
         }
     }

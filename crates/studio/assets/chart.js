@@ -379,12 +379,14 @@ const Chart = (() => {
         holder = svg.querySelector(`g.badge[data-badge-t="${c.transition}"][data-badge-b="${c.branch}"]`);
         owner = svg.querySelector(`g.tr[data-t="${c.transition}"][data-b="${c.branch}"]`);
       }
-      if (owner && n === 0) owner.classList.add('never');
+      // An observer's `error` state is meant never to be entered: not a gap.
+      const gap = n === 0 && !c.expected_unreached;
+      if (owner && gap) owner.classList.add('never');
       if (holder) {
         const txt = '×' + n;
         const w = txt.length * 6 + 6;
         const dx = c.kind === 'state' ? -w : 0;
-        holder.innerHTML = `<rect x="${dx}" y="0" width="${w}" height="13" rx="6.5" class="${n === 0 ? 'never' : ''}" style="fill:${n === 0 ? '#c0392b' : '#6a7383'}"/><text x="${dx + 3}" y="10">${txt}</text>`;
+        holder.innerHTML = `<rect x="${dx}" y="0" width="${w}" height="13" rx="6.5" class="${gap ? 'never' : ''}" style="fill:${gap ? '#c0392b' : '#6a7383'}"/><text x="${dx + 3}" y="10">${txt}</text>`;
       }
     });
   }

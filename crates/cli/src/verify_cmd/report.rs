@@ -143,6 +143,7 @@ pub fn stats_json(p: &Program, source: &Sources, s: &Stats) -> Value {
 fn dead_json(p: &Program, sources: &Sources, dead: &[u32]) -> Value {
     dead.iter()
         .filter_map(|&c| p.covers.get(c as usize))
+        .filter(|c| !c.expected_unreached)
         .map(|c| {
             let (file, line, col) = file_line_col(sources, c.span.start);
             json!({"instance": p.instances[c.instance as usize].name, "kind": cover_kind(&c.kind), "label": c.label, "file": file, "line": line, "col": col})
@@ -251,7 +252,7 @@ impl Columns {
 
 /// What follows the verdict table in the human-readable report: statistics, dead design
 /// and counterexample tables (nothing under `--quiet`). `explicit`: the explicit engine ran
-/// alone (its statistics are shown).
+/// alone (its statistics are shown). `show`: the `--show` patterns choosing the columns.
 pub fn tail(
     loaded: &Loaded,
     p: &Program,
@@ -259,6 +260,7 @@ pub fn tail(
     cexs: &[Option<Cex>],
     quiet: bool,
     explicit: bool,
+    show: &[String],
 ) -> String {
     let mut out = String::new();
     if quiet {
@@ -267,7 +269,10 @@ pub fn tail(
     if explicit {
         explicit_stats(&mut out, loaded, p, &rep.stats);
     }
-    let views = Views::new(&loaded.model, p);
+    let mut views = Views::new(&loaded.model, p);
+    // The patterns were checked before the run (`table::show`).
+    let _unmatched = views.select(show);
+    let width = table::terminal_width();
     // A configuration's system is `System:configuration` (docs/components.md).
     let config = p
         .name
@@ -294,7 +299,7 @@ pub fn tail(
                     r.depth,
                     c.tick
                 );
-                out.push_str(&table::render(p, &views, &c.trace));
+                out.push_str(&table::render(p, &views, &c.trace, width));
                 if let Some(e) = &r.error {
                     let _ = writeln!(
                         out,
@@ -336,7 +341,7 @@ fn explicit_stats(out: &mut String, loaded: &Loaded, p: &Program, s: &Stats) {
     }
     if let Some(dead) = &s.dead {
         for &c in dead {
-            let Some(c) = p.covers.get(c as usize) else {
+            let Some(c) = p.covers.get(c as usize).filter(|c| !c.expected_unreached) else {
                 continue;
             };
             let (file, line, col) = file_line_col(&loaded.sources, c.span.start);
