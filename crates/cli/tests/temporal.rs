@@ -343,3 +343,32 @@ fn ltl_through_aiger_justice() {
     assert!(String::from_utf8_lossy(&out.stderr).contains("compassion"));
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// The FAM liveness models are what `examples/fam/liveness/gen.sh` produces from the closed
+/// loops: their systems are the closed loops' instances, wiring, order and assumes.
+#[test]
+fn fam_liveness_models_are_up_to_date() {
+    let root = format!("{}/../..", env!("CARGO_MANIFEST_DIR"));
+    let dir = std::env::temp_dir().join(format!("statecheck-famlive-{}", std::process::id()));
+    let st = Command::new("sh")
+        .arg(format!("{root}/examples/fam/liveness/gen.sh"))
+        .arg(&dir)
+        .status()
+        .expect("sh gen.sh runs");
+    assert!(st.success());
+    let mut n = 0;
+    for entry in std::fs::read_dir(&dir).expect("read") {
+        let p = entry.expect("entry").path();
+        let name = p.file_name().expect("name").to_string_lossy().into_owned();
+        let fresh = std::fs::read_to_string(&p).expect("generated");
+        let committed = std::fs::read_to_string(format!("{root}/examples/fam/liveness/{name}"))
+            .unwrap_or_default();
+        assert!(
+            fresh == committed,
+            "examples/fam/liveness/{name} is stale: run its gen.sh"
+        );
+        n += 1;
+    }
+    assert_eq!(n, 5);
+    let _ = std::fs::remove_dir_all(&dir);
+}

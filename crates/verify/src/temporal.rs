@@ -263,13 +263,28 @@ fn race(
                 let tx = tx.clone();
                 let (order, flags, stop, rows) = (&order, &flags, &stop, rows);
                 s.spawn(move || {
-                    for &i in order {
+                    for (pos, &i) in order.iter().enumerate() {
                         if flags[i].load(Ordering::Relaxed) || stop.load(Ordering::Relaxed) {
                             continue;
                         }
+                        // An equal share of the time left for each row still open (a row
+                        // decided early leaves its time to the others), within the per-property
+                        // budget: one hard row never starves the rows behind it.
+                        let now = Instant::now();
+                        let open = order[pos..]
+                            .iter()
+                            .filter(|&&j| !flags[j].load(Ordering::Relaxed))
+                            .count()
+                            .max(1) as u32;
+                        let share = deadline.map(|d| now + d.saturating_duration_since(now) / open);
+                        let own = opts.property_timeout.map(|d| now + d);
+                        let attempt = match (share, own) {
+                            (Some(a), Some(b)) => Some(a.min(b)),
+                            (a, b) => a.or(b),
+                        };
                         let lim = Limits {
                             deadline,
-                            attempt_deadline: opts.property_timeout.map(|d| Instant::now() + d),
+                            attempt_deadline: attempt,
                             max_depth: depth,
                             stop: Some(Arc::clone(&flags[i])),
                         };
