@@ -283,6 +283,10 @@ pub struct Cover {
     pub label: String,
     /// Where it was written.
     pub span: Span,
+    /// True when the item is meant never to be covered: an observer's `error` state
+    /// (`Chart::is_observer_error`) and a transition whose every target is one. Reports of
+    /// dead design and of coverage leave such items out.
+    pub expected_unreached: bool,
 }
 
 /// Per-instance layout: which slot holds what.
@@ -350,13 +354,68 @@ pub enum PropertyKind {
     },
 }
 
+/// What every state after a tick must satisfy for a property: compiled from the property by
+/// the lowering, so that every consumer (simulator, engines, code generators) reads a property
+/// the same way and none re-decides what an invariant, a `respond` or an observer means.
+///
+/// Each expression is read as a truth value: non-zero is true, and an expression whose
+/// evaluation fails reads as **false** ([`crate::Machine::holds`]). An invariant whose
+/// expression fails is therefore violated, and a target whose expression fails is not reached.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Goal {
+    /// Violated by a state where `when` holds (every state, without one) and `holds` does not:
+    /// invariants (`when` is their `assuming`), bounded response (its monitor within the
+    /// bound) and observers (not in `error`).
+    Always {
+        /// The restriction, if any.
+        when: Option<ExprId>,
+        /// What must hold.
+        holds: ExprId,
+    },
+    /// Witnessed by a state where `target` holds (`reachable`).
+    Reach {
+        /// The target.
+        target: ExprId,
+    },
+}
+
+impl Goal {
+    /// True when a state decides the goal: it violates an `Always` or witnesses a `Reach`.
+    /// `holds` reads one expression on that state (evaluation failure reads as false).
+    #[inline]
+    pub fn decided_by(self, mut holds: impl FnMut(ExprId) -> bool) -> bool {
+        match self {
+            // `holds` first: it usually holds, and then `when` need not be read (both are
+            // pure, so the order does not change the answer).
+            Goal::Always { when, holds: h } => !holds(h) && when.is_none_or(holds),
+            Goal::Reach { target } => holds(target),
+        }
+    }
+
+    /// True for a reachability goal (decided by a witness, not a violation).
+    pub fn is_reach(self) -> bool {
+        matches!(self, Goal::Reach { .. })
+    }
+
+    /// The expressions the goal reads: `holds` then `when`, or the target.
+    pub fn exprs(self) -> impl Iterator<Item = ExprId> {
+        let (a, b) = match self {
+            Goal::Always { when, holds } => (holds, when),
+            Goal::Reach { target } => (target, None),
+        };
+        std::iter::once(a).chain(b)
+    }
+}
+
 /// A property of the system.
 #[derive(Clone, Debug)]
 pub struct Property {
     /// Its name (a contract).
     pub name: String,
-    /// What it states.
+    /// What it states, as written (for reports).
     pub kind: PropertyKind,
+    /// What it asks of every state after a tick: the form every consumer reads.
+    pub goal: Goal,
     /// Where it was declared.
     pub span: Span,
 }
@@ -399,16 +458,45 @@ pub struct Program {
     pub started: SlotId,
     /// Number of expression locals (see [`Node::Let`]).
     pub n_locals: usize,
-    /// The interpreter's compiled form, built on first use.
-    pub(crate) code: std::sync::OnceLock<crate::vm::Code>,
+    /// What the interpreter derives from the program once (its register code, `crate::vm`).
+    pub(crate) run_cache: RunCache,
+}
+
+/// What the interpreter derives from a program once, on first use, and shares between all the
+/// machines that run it (the register code of `crate::vm`). Opaque here, so that the IR's data
+/// does not depend on how it is run; a cloned program starts with an empty cache.
+#[derive(Default)]
+pub(crate) struct RunCache(std::sync::OnceLock<Box<dyn std::any::Any + Send + Sync>>);
+
+impl RunCache {
+    /// The cached value, computed by `init` on first use; `None` if a value of another type
+    /// was cached (one type is ever stored: `vm::Code`).
+    pub(crate) fn get_or_init<T: std::any::Any + Send + Sync>(
+        &self,
+        init: impl FnOnce() -> T,
+    ) -> Option<&T> {
+        self.0.get_or_init(|| Box::new(init())).downcast_ref()
+    }
+}
+
+impl Clone for RunCache {
+    fn clone(&self) -> Self {
+        RunCache::default()
+    }
+}
+
+impl std::fmt::Debug for RunCache {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        let state = if self.0.get().is_some() {
+            "built"
+        } else {
+            "empty"
+        };
+        write!(f, "RunCache({state})")
+    }
 }
 
 impl Program {
-    /// The compiled form the interpreter runs (built once).
-    pub(crate) fn code(&self) -> &crate::vm::Code {
-        self.code.get_or_init(|| crate::vm::Code::compile(self))
-    }
-
     /// The slots of the persistent state.
     pub fn state_slots(&self) -> &[Slot] {
         &self.slots[..self.n_state]

@@ -342,13 +342,20 @@ fn random_program(seed: u64) -> Program {
         .collect();
     let step = g.block(3, None);
     let properties = (0..3)
-        .map(|k| Property {
-            name: format!("prop{k}"),
-            kind: PropertyKind::Invariant {
-                expr: g.expr(3),
-                assuming: None,
-            },
-            span: Span::default(),
+        .map(|k| {
+            let expr = g.expr(3);
+            Property {
+                name: format!("prop{k}"),
+                kind: PropertyKind::Invariant {
+                    expr,
+                    assuming: None,
+                },
+                goal: Goal::Always {
+                    when: None,
+                    holds: expr,
+                },
+                span: Span::default(),
+            }
         })
         .collect();
     let sites = (0..g.n_sites)
@@ -365,6 +372,7 @@ fn random_program(seed: u64) -> Program {
             kind: CoverKind::State(k),
             label: format!("cover {k}"),
             span: Span::default(),
+            expected_unreached: false,
         })
         .collect();
     Program {
@@ -385,7 +393,7 @@ fn random_program(seed: u64) -> Program {
         fairness: Vec::new(),
         started: 0,
         n_locals: g.n_locals as usize,
-        code: std::sync::OnceLock::new(),
+        run_cache: Default::default(),
     }
 }
 
