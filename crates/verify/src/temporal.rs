@@ -197,9 +197,29 @@ fn race(
             g[i] = Some((r, m));
         }
     };
+    // `deadlock_free` needs no search when the assumes read only inputs and allow some
+    // vector: every state then has a successor.
+    if let Some(i) = rows.iter().position(|r| r.temporal.is_none()) {
+        if inputs_only_and_satisfiable(program) {
+            let m = Meta {
+                engine: opts.engine.as_str(),
+                time_s: Some(started.elapsed().as_secs_f64()),
+                reason: None,
+                decided_at_s: Some(started.elapsed().as_secs_f64()),
+            };
+            let mut r = PropResult::unknown(&rows[i].name, rows[i].kind);
+            r.verdict = statecheck_ir::verdict::Verdict::Proved;
+            r.note = Some("the `assume`s read only inputs and allow an input vector".into());
+            decide(i, r, m);
+        }
+    }
     // Rows no SAT engine decides, under one SAT engine.
     if !auto {
-        for (i, row) in rows.iter().enumerate().filter(|&(i, _)| !ltl[i]) {
+        let open: Vec<usize> = (0..n)
+            .filter(|&i| !ltl[i] && got.lock().is_ok_and(|g| g[i].is_none()))
+            .collect();
+        for i in open {
+            let row = &rows[i];
             let m = Meta {
                 engine: opts.engine.as_str(),
                 time_s: Some(0.0),
@@ -243,13 +263,28 @@ fn race(
                 let tx = tx.clone();
                 let (order, flags, stop, rows) = (&order, &flags, &stop, rows);
                 s.spawn(move || {
-                    for &i in order {
+                    for (pos, &i) in order.iter().enumerate() {
                         if flags[i].load(Ordering::Relaxed) || stop.load(Ordering::Relaxed) {
                             continue;
                         }
+                        // An equal share of the time left for each row still open (a row
+                        // decided early leaves its time to the others), within the per-property
+                        // budget: one hard row never starves the rows behind it.
+                        let now = Instant::now();
+                        let open = order[pos..]
+                            .iter()
+                            .filter(|&&j| !flags[j].load(Ordering::Relaxed))
+                            .count()
+                            .max(1) as u32;
+                        let share = deadline.map(|d| now + d.saturating_duration_since(now) / open);
+                        let own = opts.property_timeout.map(|d| now + d);
+                        let attempt = match (share, own) {
+                            (Some(a), Some(b)) => Some(a.min(b)),
+                            (a, b) => a.or(b),
+                        };
                         let lim = Limits {
                             deadline,
-                            attempt_deadline: opts.property_timeout.map(|d| Instant::now() + d),
+                            attempt_deadline: attempt,
                             max_depth: depth,
                             stop: Some(Arc::clone(&flags[i])),
                         };
@@ -345,4 +380,17 @@ fn race(
         *g = Some((r, m));
     }
     got.into_iter().flatten().collect()
+}
+
+/// True when every `assume` conjunct reads only inputs and some input vector satisfies them
+/// all (found by the IR's pruned enumeration): then no reachable state is a deadlock.
+fn inputs_only_and_satisfiable(program: &Program) -> bool {
+    let mut space = statecheck_ir::assume::InputSpace::new(program);
+    if !space.state_assumes.is_empty() || !space.mixed_assumes.is_empty() {
+        return false;
+    }
+    if space.input_assumes.is_empty() {
+        return true;
+    }
+    space.solve_static(program) && space.listed().is_some_and(|(_, n)| n > 0)
 }
