@@ -206,12 +206,12 @@ impl Columns {
         let w = self.width;
         if self.engines {
             format!(
-                "{:<w$}  {:<9}  {:<11}  {:<8}  {:>5}  time\n",
+                "{:<w$}  {:<11}  {:<11}  {:<8}  {:>5}  time\n",
                 "property", "kind", "verdict", "engine", "depth"
             )
         } else {
             format!(
-                "{:<w$}  {:<9}  {:<11}  depth\n",
+                "{:<w$}  {:<11}  {:<11}  depth\n",
                 "property", "kind", "verdict"
             )
         }
@@ -222,7 +222,7 @@ impl Columns {
         let w = self.width;
         if self.engines {
             format!(
-                "{:<w$}  {:<9}  {:<11}  {:<8}  {:>5}  {:.3} s{}\n",
+                "{:<w$}  {:<11}  {:<11}  {:<8}  {:>5}  {:.3} s{}\n",
                 r.name,
                 r.kind.as_str(),
                 r.verdict.as_str(),
@@ -236,7 +236,7 @@ impl Columns {
             )
         } else {
             format!(
-                "{:<w$}  {:<9}  {:<11}  {}{}\n",
+                "{:<w$}  {:<11}  {:<11}  {}{}\n",
                 r.name,
                 r.kind.as_str(),
                 r.verdict.as_str(),
