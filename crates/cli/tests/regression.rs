@@ -177,6 +177,40 @@ fn spin_accepts_long_actions_and_long_else_if_chains() {
 }
 
 #[test]
+fn spin_accepts_many_checked_divisions_in_one_action() {
+    // Found by the differential fuzzer (crates/fuzz): 120 divisions by an input that may be 0,
+    // each a check that restores 16 variables and jumps to the end of the tick, fit SPIN's
+    // d_step by the old count (options and ends only) but not by SPIN's (every element:
+    // 2048 at most), so `spin -a` failed with "d_step sequence too long".
+    let d = temp_dir("spin-div");
+    let vars: String = (0..16)
+        .map(|k| format!("  output v{k}: int[0..9] = 1;\n"))
+        .collect();
+    let acts: String = (0..120).map(|k| format!("v{} = 9 / x; ", k % 16)).collect();
+    let model = format!("chart M {{\n  input x: int[0..3] = 1;\n{vars}  initial S;\n  state S {{ on [x > 0] / {{ {acts}}}; }}\n}}\nsystem Sys {{ instance m: M; }}\n");
+    std::fs::write(d.join("m.sc"), model).expect("model");
+    let e = statecheck(&d, &["export", "promela", "m.sc", "-o", "m.pml"]);
+    assert_eq!(
+        e.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&e.stderr)
+    );
+    let a = Command::new("spin")
+        .args(["-a", "m.pml"])
+        .current_dir(&d)
+        .output()
+        .expect("spin runs");
+    let text =
+        String::from_utf8_lossy(&a.stdout).into_owned() + &String::from_utf8_lossy(&a.stderr);
+    assert!(
+        a.status.success() && !text.contains("too long"),
+        "spin -a: {text}"
+    );
+    let _ = std::fs::remove_dir_all(&d);
+}
+
+#[test]
 fn empty_output_paths_are_usage_errors() {
     let d = temp_dir("empty");
     std::fs::write(d.join("m.sc"), SMALL).expect("model");
