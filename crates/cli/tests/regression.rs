@@ -328,3 +328,53 @@ fn i64_min_in_a_scenario_replays() {
     assert!(all.contains("overflow"), "{all}");
     let _ = std::fs::remove_dir_all(&d);
 }
+
+#[test]
+fn no_c_compiler_outlives_verify() {
+    // The explicit engine's `auto` backend compiles native successors in the background after
+    // 0.3 s; a run that ended (here by its 1 s time limit, with the FAM far from explored)
+    // once left gcc's `cc1` running and its temporary files in the cache. The compiler runs
+    // in its own process group, which ends with the run.
+    let d = temp_dir("cc-left");
+    let cache = d.join("cache");
+    std::fs::create_dir(&cache).expect("cache");
+    #[cfg(unix)]
+    {
+        use std::os::unix::fs::PermissionsExt;
+        std::fs::set_permissions(&cache, std::fs::Permissions::from_mode(0o700)).expect("mode");
+    }
+    let model = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples/fam/fam_system.sc");
+    let out = Command::new(env!("CARGO_BIN_EXE_statecheck"))
+        .args([
+            "verify",
+            model.to_str().expect("utf-8 path"),
+            "--engine",
+            "explicit",
+            "--timeout",
+            "1",
+        ])
+        .env("STATECHECK_CACHE_DIR", &cache)
+        .output()
+        .expect("runs");
+    assert!(matches!(out.status.code(), Some(1 | 3)), "{out:?}");
+    let left = Command::new("pgrep")
+        .args(["-f", cache.to_str().expect("utf-8 path")])
+        .output()
+        .expect("pgrep runs");
+    assert!(
+        left.stdout.is_empty(),
+        "compilers left running: {}",
+        String::from_utf8_lossy(&left.stdout)
+    );
+    // Only finished libraries (and their sources) stay in the cache, no temporary files.
+    let names: Vec<String> = std::fs::read_dir(&cache)
+        .expect("cache")
+        .flatten()
+        .map(|e| e.file_name().to_string_lossy().into_owned())
+        .collect();
+    assert!(
+        names.iter().all(|n| n.matches('.').count() == 1),
+        "temporary files left: {names:?}"
+    );
+    let _ = std::fs::remove_dir_all(&d);
+}
