@@ -17,6 +17,9 @@ pub struct SimArgs {
     /// The system (or chart) to simulate.
     #[arg(long)]
     system: Option<String>,
+    /// The system's configuration (`configuration NAME { … }`, docs/components.md).
+    #[arg(long, value_name = "NAME")]
+    config: Option<String>,
     /// A scenario file: the inputs per tick (`-`: standard input).
     #[arg(long, conflicts_with = "random")]
     scenario: Option<String>,
@@ -52,19 +55,25 @@ pub struct SimArgs {
     /// Print nothing but errors (and the requested files).
     #[arg(long, short)]
     quiet: bool,
+    /// Show only these variables and events in the table: globs over `instance.name` (`*`
+    /// any characters, `?` one), comma-separated or repeated. JSON, CSV and VCD are unchanged.
+    #[arg(long, value_name = "PATTERN")]
+    show: Vec<String>,
 }
 
 /// Run the command; returns the exit code.
 pub fn run(a: SimArgs) -> Result<u8> {
     let loaded = load::load(&a.model, false)?;
-    let sys = loaded.system(a.system.as_deref())?;
+    let sys = loaded.system_in(a.system.as_deref(), a.config.as_deref())?;
     let program = loaded.lower(sys)?;
     let opts = Options {
         coverage: a.coverage.is_some(),
         no_trace: true,
         keep_going: a.keep_going,
     };
-    let views = Views::new(&loaded.model, &program);
+    let mut views = Views::new(&loaded.model, &program);
+    output::table::show(&mut views, &a.show)?;
+    let views = views;
     let format = if a.json {
         Format::Json
     } else if a.csv {

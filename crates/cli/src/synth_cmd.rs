@@ -9,7 +9,7 @@
 //! Standard output may be a closed pipe (`synth … | head`): printing stops quietly, and the
 //! `-o` file is written before anything is printed.
 
-use crate::supervisor::{print_report, problem};
+use crate::supervisor::{print_report, problem, sc_problem};
 use crate::{diag, load, write_out};
 use anyhow::{anyhow, bail, Result};
 use clap::Args;
@@ -31,7 +31,8 @@ macro_rules! out {
 /// Arguments of `statecheck synth`.
 #[derive(Args)]
 pub struct SynthArgs {
-    /// The `.sc` model file with plant and requirement charts and a system.
+    /// The `.sc` model file with plant and requirement charts and a system, or a Supremica
+    /// automata file (`.xml`).
     model: String,
     /// The system of plants and requirements (default: the only system).
     #[arg(long)]
@@ -179,7 +180,15 @@ pub fn run(a: SynthArgs) -> Result<u8> {
         Outcome::Supervisor(sup) => sup,
     };
     // The file first: a closed standard output must not lose it.
-    let text = (a.output.is_some() || a.check).then(|| emit::emit(&p, &sup, &a.model));
+    // Names that are not `.sc` identifiers (from a Supremica file) are mapped, and listed.
+    let (sc, notes) = sc_problem(&p);
+    let text = (a.output.is_some() || a.check).then(|| {
+        let mut t = emit::emit(&sc, &sup, &a.model);
+        if let Some(i) = t.find("\n\n") {
+            t.insert_str(i + 1, &notes);
+        }
+        t
+    });
     if let (Some(out), Some(text)) = (&a.output, &text) {
         write_out(Some(out), text)?;
     }
@@ -213,7 +222,7 @@ pub fn run(a: SynthArgs) -> Result<u8> {
         }
     }
     if let (true, Some(text)) = (a.check, &text) {
-        let r = check_text(&p, text, a.output.as_deref().unwrap_or("<supervisor>"))?;
+        let r = check_text(&sc, text, a.output.as_deref().unwrap_or("<supervisor>"))?;
         print_report(&r, a.quiet);
         if !r.violations.is_empty() {
             return Ok(1);

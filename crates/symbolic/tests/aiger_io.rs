@@ -158,3 +158,38 @@ fn header_count_overflow_is_an_error() {
         assert!(err.message.contains("overflows"), "{kind}: {err}");
     }
 }
+
+/// AIGER 1.9 justice and fairness sections (hand-written): one input `x`, a latch `l` that
+/// copies it; justice property 0 = {l, !x} (two literals), fairness {x}. Read, written in both
+/// formats and read again, the sections keep their literals and the symbol `j0`.
+#[test]
+fn justice_and_fairness_sections() {
+    // M=3 I=1 L=1 O=0 A=1 B=0 C=0 J=1 F=1; gate 6 = x && l (unused by the properties).
+    let text = "aag 3 1 1 0 1 0 0 1 1\n2\n4 2\n2\n4\n3\n2\n6 2 4\nj0 live\n";
+    let g = parse(text.as_bytes()).expect("parses");
+    assert_eq!(g.justice.len(), 1);
+    assert_eq!(g.justice[0].len(), 2);
+    assert_eq!(g.fairness.len(), 1);
+    assert_eq!(g.justice_names, vec![Some("live".to_string())]);
+    let (x, l) = (g.inputs[0], g.latches[0].var);
+    assert_eq!(g.justice[0][0].var(), l);
+    assert!(!g.justice[0][0].is_neg());
+    assert_eq!(g.justice[0][1].var(), x);
+    assert!(g.justice[0][1].is_neg());
+    assert_eq!(g.fairness[0].var(), x);
+    for bytes in [ascii(&g, ""), binary(&g, "")] {
+        let h = parse(&bytes).expect("reads back");
+        assert_eq!(h.justice.len(), 1);
+        assert_eq!(h.justice[0].len(), 2);
+        assert_eq!(h.fairness.len(), 1);
+        assert_eq!(h.justice_names, g.justice_names);
+        let head =
+            String::from_utf8_lossy(&bytes[..bytes.iter().position(|&b| b == b'\n').unwrap_or(0)])
+                .to_string();
+        assert!(head.ends_with(" 0 0 1 1"), "{head}");
+    }
+    // A justice size larger than the file is an error, not an allocation.
+    assert!(parse(b"aag 1 1 0 0 0 0 0 1 0\n2\n4000000000\n").is_err());
+    // A file that ends inside the justice section is an error.
+    assert!(parse(b"aag 1 1 0 0 0 0 0 1 0\n2\n2\n2\n").is_err());
+}

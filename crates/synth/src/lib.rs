@@ -23,6 +23,7 @@ pub mod families;
 pub mod guards;
 pub mod limits;
 pub mod problem;
+pub mod supremica;
 pub mod symbolic;
 
 pub use encode::Formula;
