@@ -119,7 +119,11 @@ impl std::error::Error for Exit {}
 
 fn main() -> ExitCode {
     let cli = Cli::parse();
-    match run(cli) {
+    let result = run(cli);
+    // A native successor generator still compiling in the background (the explicit engine's
+    // `auto` backend) must not outlive the run.
+    statecheck_native::kill_compilers();
+    match result {
         Ok(code) => ExitCode::from(code),
         Err(e) => {
             if let Some(Exit(code)) = e.downcast_ref::<Exit>() {

@@ -177,6 +177,40 @@ fn spin_accepts_long_actions_and_long_else_if_chains() {
 }
 
 #[test]
+fn spin_accepts_many_checked_divisions_in_one_action() {
+    // Found by the differential fuzzer (crates/fuzz): 120 divisions by an input that may be 0,
+    // each a check that restores 16 variables and jumps to the end of the tick, fit SPIN's
+    // d_step by the old count (options and ends only) but not by SPIN's (every element:
+    // 2048 at most), so `spin -a` failed with "d_step sequence too long".
+    let d = temp_dir("spin-div");
+    let vars: String = (0..16)
+        .map(|k| format!("  output v{k}: int[0..9] = 1;\n"))
+        .collect();
+    let acts: String = (0..120).map(|k| format!("v{} = 9 / x; ", k % 16)).collect();
+    let model = format!("chart M {{\n  input x: int[0..3] = 1;\n{vars}  initial S;\n  state S {{ on [x > 0] / {{ {acts}}}; }}\n}}\nsystem Sys {{ instance m: M; }}\n");
+    std::fs::write(d.join("m.sc"), model).expect("model");
+    let e = statecheck(&d, &["export", "promela", "m.sc", "-o", "m.pml"]);
+    assert_eq!(
+        e.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&e.stderr)
+    );
+    let a = Command::new("spin")
+        .args(["-a", "m.pml"])
+        .current_dir(&d)
+        .output()
+        .expect("spin runs");
+    let text =
+        String::from_utf8_lossy(&a.stdout).into_owned() + &String::from_utf8_lossy(&a.stderr);
+    assert!(
+        a.status.success() && !text.contains("too long"),
+        "spin -a: {text}"
+    );
+    let _ = std::fs::remove_dir_all(&d);
+}
+
+#[test]
 fn empty_output_paths_are_usage_errors() {
     let d = temp_dir("empty");
     std::fs::write(d.join("m.sc"), SMALL).expect("model");
@@ -292,5 +326,55 @@ fn i64_min_in_a_scenario_replays() {
     let all = String::from_utf8_lossy(&s.stdout).into_owned() + &String::from_utf8_lossy(&s.stderr);
     assert!(!all.contains("not a value of"), "{all}");
     assert!(all.contains("overflow"), "{all}");
+    let _ = std::fs::remove_dir_all(&d);
+}
+
+#[test]
+fn no_c_compiler_outlives_verify() {
+    // The explicit engine's `auto` backend compiles native successors in the background after
+    // 0.3 s; a run that ended (here by its 1 s time limit, with the FAM far from explored)
+    // once left gcc's `cc1` running and its temporary files in the cache. The compiler runs
+    // in its own process group, which ends with the run.
+    let d = temp_dir("cc-left");
+    let cache = d.join("cache");
+    std::fs::create_dir(&cache).expect("cache");
+    #[cfg(unix)]
+    {
+        use std::os::unix::fs::PermissionsExt;
+        std::fs::set_permissions(&cache, std::fs::Permissions::from_mode(0o700)).expect("mode");
+    }
+    let model = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples/fam/fam_system.sc");
+    let out = Command::new(env!("CARGO_BIN_EXE_statecheck"))
+        .args([
+            "verify",
+            model.to_str().expect("utf-8 path"),
+            "--engine",
+            "explicit",
+            "--timeout",
+            "1",
+        ])
+        .env("STATECHECK_CACHE_DIR", &cache)
+        .output()
+        .expect("runs");
+    assert!(matches!(out.status.code(), Some(1 | 3)), "{out:?}");
+    let left = Command::new("pgrep")
+        .args(["-f", cache.to_str().expect("utf-8 path")])
+        .output()
+        .expect("pgrep runs");
+    assert!(
+        left.stdout.is_empty(),
+        "compilers left running: {}",
+        String::from_utf8_lossy(&left.stdout)
+    );
+    // Only finished libraries (and their sources) stay in the cache, no temporary files.
+    let names: Vec<String> = std::fs::read_dir(&cache)
+        .expect("cache")
+        .flatten()
+        .map(|e| e.file_name().to_string_lossy().into_owned())
+        .collect();
+    assert!(
+        names.iter().all(|n| n.matches('.').count() == 1),
+        "temporary files left: {names:?}"
+    );
     let _ = std::fs::remove_dir_all(&d);
 }

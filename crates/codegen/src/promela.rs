@@ -183,7 +183,7 @@ pub fn export(p: &Program, src: &Source, opts: &PromelaOptions) -> Result<String
     // SPIN compiles a d_step into one transition with at most 2048 jump sources and
     // destinations ("d_step sequence too long"); a longer step runs as an atomic sequence,
     // which has no such limit.
-    let step_jumps = step_jumps + jump_points(&assumes) + jump_points(&props);
+    let step_jumps = step_jumps + jump_points(&assumes) + jump_points(&props) + p.n_state;
     if step_jumps > MAX_DSTEP_JUMPS {
         let _ = writeln!(
             text,
@@ -239,14 +239,18 @@ fn collect_calls(stmts: &[Stmt], acc: &mut Vec<u32>) {
 /// Longest procedure body written as an `inline` (SPIN's inline text buffer holds 64 KiB).
 const MAX_INLINE_TEXT: usize = 60_000;
 
-/// Most jump points (conservatively counted) of a step still wrapped in a `d_step` (SPIN's
-/// limit is 2048 jump sources and as many destinations).
-const MAX_DSTEP_JUMPS: usize = 1_500;
+/// Most elements (conservatively counted) of a step still wrapped in a `d_step`. SPIN
+/// numbers every element of a `d_step` (each statement, guard, option, `if`/`fi`, `do`/`od`)
+/// in one table of 2048 entries ("d_step sequence too long"): measured with spin 6.5,
+/// `x = 1;` fits 2046 times, `if :: c -> x = 1 :: else -> skip fi;` (6 elements by
+/// [`jump_points`]) 341 times, a range check with 6 restores and a `goto` (12) 170 times.
+const MAX_DSTEP_JUMPS: usize = 1_800;
 
-/// A conservative count of the jump sources and destinations SPIN makes of Promela text:
-/// every option, end of selection or loop, `break` and `goto`.
+/// A conservative count of the elements SPIN makes of Promela text: every statement end
+/// (`;`), option (`::`), guard arrow (`->`, also counted inside conditional expressions),
+/// end of selection or loop, `break` and `goto`.
 fn jump_points(text: &str) -> usize {
-    ["::", "fi;", "od;", "break", "goto", "fi\n"]
+    [";", "::", "->", "fi\n", "od\n", "break", "goto"]
         .iter()
         .map(|t| text.matches(t).count())
         .sum()

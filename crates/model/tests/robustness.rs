@@ -120,3 +120,27 @@ fn very_long_unknown_identifier_gets_no_suggestion() {
         .iter()
         .any(|d| d.hint.as_deref().is_some_and(|h| h.contains("`level`"))));
 }
+
+#[test]
+fn suggestions_for_unknown_targets_in_deep_nesting_have_bounded_cost() {
+    // Found by `crates/fuzz` (a mutated history model, 29 KB): every unknown target's
+    // "did you mean" search once compared every state's every suffix from every enclosing
+    // state, states × depth³ per diagnostic; 120 nested states each with an unknown target
+    // took minutes (debug build). Every unknown target still gets its E0111, one per line.
+    let n = 120;
+    let mut src = String::from("chart M {\n  input event e;\n  initial S0;\n");
+    for k in 0..n {
+        src.push_str(&format!(
+            "  state S{k} {{ on e -> nowhere{k};\n  initial S{};\n",
+            k + 1
+        ));
+    }
+    src.push_str(&format!("  state S{n};\n"));
+    for _ in 0..n {
+        src.push_str("  }\n");
+    }
+    src.push_str("}\n");
+    let errs = errors(&src);
+    let want: Vec<(&str, usize)> = (0..n).map(|k| ("E0111", 4 + 2 * k)).collect();
+    assert_eq!(errs, want);
+}

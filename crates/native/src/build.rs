@@ -111,23 +111,102 @@ pub(crate) fn library(source: &str) -> Result<PathBuf, String> {
     placed.map(|()| lib_path)
 }
 
-/// Run the compiler on one file.
+#[cfg(unix)]
+use std::os::unix::process::CommandExt as _;
+
+/// Compilers still running, by a number of our own: [`kill_compilers`] ends them when the
+/// run ends (a `verify` that returns must not leave gcc behind; found by issue 20's limits
+/// check).
+static RUNNING: std::sync::Mutex<Vec<Running>> = std::sync::Mutex::new(Vec::new());
+
+/// A compiler in [`RUNNING`]: our number for it, the child (the leader of its own process
+/// group, so that its own children, `cc1` and `as`, end with it) and the files it writes.
+type Running = (u64, std::process::Child, Vec<std::path::PathBuf>);
+
+/// Kill `c` and every process of its group (the driver's `cc1`, `as`, `ld`), and reap it.
+fn kill_group(c: &mut std::process::Child) {
+    // `kill -KILL -- -PGID`: the group of a child we started in its own group (no `unsafe`).
+    let _ = Command::new("kill")
+        .args(["-KILL", "--", &format!("-{}", c.id())])
+        .stdout(std::process::Stdio::null())
+        .stderr(std::process::Stdio::null())
+        .status();
+    let _ = c.kill();
+    let _ = c.wait();
+}
+
+/// The next number for [`RUNNING`].
+static NEXT: std::sync::atomic::AtomicU64 = std::sync::atomic::AtomicU64::new(0);
+
+/// Kill every compiler this process started that is still running (and reap it). Later
+/// compiles still start; call this when the run ends.
+pub fn kill_compilers() {
+    let mut running = RUNNING.lock().unwrap_or_else(|e| e.into_inner());
+    for (_, c, files) in running.iter_mut() {
+        kill_group(c);
+        for f in files.iter() {
+            let _ = std::fs::remove_file(f);
+        }
+    }
+    running.clear();
+}
+
+/// Run the compiler on one file (its diagnostics go to a file beside the output, so that a
+/// full pipe never blocks it); the child is registered in [`RUNNING`] while it runs.
 fn compile(cc: &str, c: &Path, lib: &Path) -> Result<(), String> {
-    let out = Command::new(cc)
+    let err_path = lib.with_extension("stderr");
+    let err_file = std::fs::File::create(&err_path)
+        .map_err(|e| format!("cannot create {}: {e}", err_path.display()))?;
+    let mut cmd = Command::new(cc);
+    #[cfg(unix)]
+    cmd.process_group(0);
+    let child = cmd
         .args(FLAGS)
         .arg("-o")
         .arg(lib)
         .arg(c)
-        .output()
+        .stdin(std::process::Stdio::null())
+        .stdout(std::process::Stdio::null())
+        .stderr(err_file)
+        .spawn()
         .map_err(|e| format!("cannot run the C compiler `{cc}`: {e}"))?;
-    if out.status.success() {
+    let id = NEXT.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+    RUNNING.lock().unwrap_or_else(|e| e.into_inner()).push((
+        id,
+        child,
+        vec![c.to_path_buf(), lib.to_path_buf(), err_path.clone()],
+    ));
+    let status = loop {
+        let mut running = RUNNING.lock().unwrap_or_else(|e| e.into_inner());
+        let Some(k) = running.iter().position(|(i, _, _)| *i == id) else {
+            break None; // killed by `kill_compilers`
+        };
+        match running[k].1.try_wait() {
+            Ok(Some(st)) => {
+                running.swap_remove(k);
+                break Some(st);
+            }
+            Ok(None) => {}
+            Err(_) => {
+                let (_, mut c, _) = running.swap_remove(k);
+                kill_group(&mut c);
+                break None;
+            }
+        }
+        drop(running);
+        std::thread::sleep(std::time::Duration::from_millis(10));
+    };
+    let err = std::fs::read_to_string(&err_path).unwrap_or_default();
+    let _ = std::fs::remove_file(&err_path);
+    let Some(status) = status else {
+        return Err(format!("the C compiler `{cc}` was stopped"));
+    };
+    if status.success() {
         return Ok(());
     }
-    let err = String::from_utf8_lossy(&out.stderr);
     let first: Vec<&str> = err.lines().take(5).collect();
     Err(format!(
-        "the C compiler `{cc}` failed ({}): {}",
-        out.status,
+        "the C compiler `{cc}` failed ({status}): {}",
         first.join(" | ")
     ))
 }

@@ -13,6 +13,8 @@
 mod build;
 mod glue;
 
+pub use build::kill_compilers;
+
 use statecheck_explicit::pack::Packer;
 use statecheck_explicit::successors::{Build, CompiledSuccessors, SuccessorCompiler};
 use statecheck_ir::Program;

@@ -207,12 +207,18 @@ pub fn problems(
 ) -> Result<(Blasted, Vec<(usize, PropKind)>), verdict::UnknownProperty> {
     let specs = verdict::select(p, names)?;
     let bl = blast(p);
+    // By name through a map: a linear search per property was quadratic, seconds for 10^4
+    // properties before any engine started (and so past `--timeout`).
+    let by_name: std::collections::BTreeMap<&str, usize> = bl
+        .props
+        .iter()
+        .enumerate()
+        .rev()
+        .map(|(i, x)| (x.name.as_str(), i))
+        .collect();
     let idx = specs
         .iter()
-        .map(|s| {
-            let i = bl.props.iter().position(|x| x.name == s.name).unwrap_or(0);
-            (i, s.kind)
-        })
+        .map(|s| (by_name.get(s.name.as_str()).copied().unwrap_or(0), s.kind))
         .collect();
     Ok((bl, idx))
 }

@@ -10,7 +10,7 @@ fn root() -> PathBuf {
 /// Where each workspace crate sits in the pipeline: a crate may depend only on crates of a
 /// lower layer, so crates of one layer (the engines and generators above all) never depend on
 /// each other. A new crate must be placed here.
-const LAYERS: [(&str, u32); 17] = [
+const LAYERS: [(&str, u32); 18] = [
     ("statecheck-base", 0),
     ("statecheck-syntax", 1),
     ("statecheck-fmt", 2),
@@ -32,6 +32,8 @@ const LAYERS: [(&str, u32); 17] = [
     ("statecheck-cli", 8),
     ("statecheck-tidy", 9),
     ("statecheck-bench", 9),
+    // Fuzzing and differential testing over every consumer of the IR.
+    ("statecheck-fuzz", 9),
 ];
 
 /// The checkers: not even their tests depend on one another (cross-checks live above them).

@@ -14,6 +14,7 @@ pub fn on_interrupt(cancel: &Cancel) {
     // A handler already installed (a second run in one process) keeps the first one.
     let _ = ctrlc::set_handler(move || {
         if cancel.reason().is_some() {
+            statecheck_native::kill_compilers();
             std::process::exit(3);
         }
         cancel.raise(CancelReason::Interrupted);

@@ -1,0 +1,361 @@
+//! A generator of random well-typed `.sc` models (seeded, deterministic): nested exclusive and
+//! parallel states, history, timers, local and input events, choices, priorities, internal and
+//! self transitions, arithmetic that can fail at run time (division by zero, bad shifts, range
+//! errors), `assume`s (input-only and state-dependent), `invariant`/`reachable`/`respond`
+//! properties and, in some models, `ltl`/`ctl`/`fair` declarations. Optionally two instances
+//! connected in a system. (Grown from `crates/codegen/tests/gen/`.)
+
+use rand::rngs::StdRng;
+use rand::{RngExt, SeedableRng};
+
+/// Builds one model.
+pub struct Gen {
+    rng: StdRng,
+    next_state: usize,
+    /// Paths of every state (targets and `in()` operands).
+    paths: Vec<String>,
+    /// Paths that are inside a parallel state (transitions into them are avoided in regions).
+    leaves: Vec<String>,
+}
+
+impl Gen {
+    /// A generator for `seed`.
+    pub fn new(seed: u64) -> Gen {
+        Gen {
+            rng: StdRng::seed_from_u64(seed),
+            next_state: 0,
+            paths: Vec::new(),
+            leaves: Vec::new(),
+        }
+    }
+
+    fn pick(&mut self, n: usize) -> usize {
+        self.rng.random_range(0..n)
+    }
+
+    fn chance(&mut self, percent: u32) -> bool {
+        self.rng.random_range(0..100u32) < percent
+    }
+
+    fn int_leaf(&mut self) -> String {
+        match self.pick(6) {
+            0 => "x".into(),
+            1 => "y".into(),
+            2 => "a".into(),
+            3 => "c".into(),
+            _ => format!("{}", self.rng.random_range(-3i64..6)),
+        }
+    }
+
+    /// An integer expression of depth at most `d`.
+    pub fn int_expr(&mut self, d: u32) -> String {
+        if d == 0 || self.chance(30) {
+            return self.int_leaf();
+        }
+        let (l, r) = (self.int_expr(d - 1), self.int_expr(d - 1));
+        match self.pick(13) {
+            0 | 1 => format!("({l} + {r})"),
+            2 | 3 => format!("({l} - {r})"),
+            4 => format!("({l} * {r})"),
+            5 => format!("({l} / {})", self.var_int()),
+            6 => format!("({l} % {})", self.var_int()),
+            7 => format!("min({l}, {r})"),
+            8 => format!("max({l}, {r})"),
+            9 => format!("abs({l})"),
+            10 => {
+                let c = self.bool_expr(d - 1);
+                format!("(if {c} then {l} else {r})")
+            }
+            11 => format!("({l} << {})", self.var_int()),
+            _ => format!("({l} >> {})", self.var_int()),
+        }
+    }
+
+    fn var_int(&mut self) -> String {
+        ["x", "y", "a", "c", "(a + 1)"][self.pick(5)].into()
+    }
+
+    /// A boolean expression of depth at most `d`.
+    pub fn bool_expr(&mut self, d: u32) -> String {
+        if d == 0 || self.chance(25) {
+            return match self.pick(6) {
+                0 => "b".into(),
+                1 => "f".into(),
+                2 => "e0".into(),
+                3 if !self.paths.is_empty() => {
+                    let k = self.pick(self.paths.len());
+                    format!("in({})", self.paths[k])
+                }
+                _ => {
+                    let (l, r) = (self.int_leaf(), self.int_leaf());
+                    format!(
+                        "{l} {} {r}",
+                        ["<", "<=", "==", "!=", ">", ">="][self.pick(6)]
+                    )
+                }
+            };
+        }
+        match self.pick(5) {
+            0 => format!("({} && {})", self.bool_expr(d - 1), self.bool_expr(d - 1)),
+            1 => format!("({} || {})", self.bool_expr(d - 1), self.bool_expr(d - 1)),
+            2 => format!("!({})", self.bool_expr(d - 1)),
+            _ => {
+                let (l, r) = (self.int_expr(d - 1), self.int_expr(d - 1));
+                format!(
+                    "{l} {} {r}",
+                    ["<", "<=", "==", "!=", ">", ">="][self.pick(6)]
+                )
+            }
+        }
+    }
+
+    fn stmts(&mut self, n: usize) -> String {
+        let mut out = String::new();
+        for _ in 0..n {
+            let s = match self.pick(8) {
+                0 | 1 => format!("x = {};", self.int_expr(2)),
+                2 => format!("y = {};", self.int_expr(2)),
+                3 => format!("f = {};", self.bool_expr(2)),
+                4 => "raise le;".into(),
+                5 => "raise oe;".into(),
+                6 => format!("x += {};", self.int_leaf()),
+                _ => {
+                    let c = self.bool_expr(2);
+                    let t = format!("x = {};", self.int_expr(1));
+                    let e = format!("y = {};", self.int_expr(1));
+                    format!("if {c} {{ {t} }} else {{ {e} }}")
+                }
+            };
+            out.push_str(&s);
+            out.push(' ');
+        }
+        out
+    }
+
+    fn trigger(&mut self) -> String {
+        match self.pick(7) {
+            0 => "e0 ".into(),
+            1 => "e1 ".into(),
+            2 => "le ".into(),
+            3 => format!("after({}) ", self.rng.random_range(1..4)),
+            4 => "oe ".into(),
+            _ => String::new(),
+        }
+    }
+
+    fn target(&mut self, siblings: &[String]) -> String {
+        if !self.leaves.is_empty() && self.chance(30) {
+            let k = self.pick(self.leaves.len());
+            return self.leaves[k].clone();
+        }
+        siblings[self.pick(siblings.len())].clone()
+    }
+
+    fn transition(&mut self, siblings: &[String]) -> String {
+        let trig = self.trigger();
+        let guard = if trig.is_empty() || self.chance(40) {
+            format!("[{}] ", self.bool_expr(2))
+        } else {
+            String::new()
+        };
+        let action = if self.chance(50) {
+            let n = 1 + self.pick(2);
+            format!("/ {{ {}}} ", self.stmts(n))
+        } else {
+            String::new()
+        };
+        let prio = if self.chance(15) { " priority 1" } else { "" };
+        let tgt = match self.pick(6) {
+            0 => String::new(), // internal
+            1 => {
+                let (t1, t2) = (self.target(siblings), self.target(siblings));
+                let g = self.bool_expr(1);
+                let else_ = if self.chance(50) {
+                    format!(" else -> {t2};")
+                } else {
+                    String::new()
+                };
+                format!(
+                    "-> choice {{ [{g}] / {{ {}}} -> {t1};{else_} }}",
+                    self.stmts(1)
+                )
+            }
+            _ => format!("-> {}", self.target(siblings)),
+        };
+        format!("on {trig}{guard}{action}{tgt}{prio};")
+    }
+
+    /// States of one exclusive level under `prefix`: returns their text.
+    fn level(&mut self, prefix: &str, depth: u32, in_parallel: bool) -> String {
+        let n = 2 + self.pick(2);
+        let names: Vec<String> = (0..n)
+            .map(|_| {
+                self.next_state += 1;
+                format!("S{}", self.next_state)
+            })
+            .collect();
+        let full: Vec<String> = names.iter().map(|s| format!("{prefix}{s}")).collect();
+        self.paths.extend(full.iter().cloned());
+        let mut out = format!("initial {}; ", names[0]);
+        if depth > 0 && self.chance(30) {
+            out.push_str(if self.chance(50) {
+                "history shallow; "
+            } else {
+                "history deep; "
+            });
+        }
+        for (k, name) in names.iter().enumerate() {
+            let mut body = String::new();
+            for (kw, pct) in [("entry", 50), ("during", 50), ("exit", 30)] {
+                if self.chance(pct) {
+                    let n = 1 + self.pick(2);
+                    body.push_str(&format!("{kw} {{ {}}} ", self.stmts(n)));
+                }
+            }
+            for _ in 0..self.pick(3) {
+                let t = self.transition(&full);
+                body.push_str(&t);
+                body.push(' ');
+            }
+            let inner = format!("{}.", full[k]);
+            if depth < 2 && self.chance(35) {
+                if !in_parallel && self.chance(30) {
+                    let mut regions = String::new();
+                    for r in 0..2 {
+                        let rp = format!("{inner}r{r}.");
+                        let lv = self.level(&rp, depth + 1, true);
+                        regions.push_str(&format!("region r{r} {{ {lv} }} "));
+                    }
+                    body.push_str(&regions);
+                } else {
+                    body.push_str(&self.level(&inner, depth + 1, in_parallel));
+                }
+            } else if !in_parallel {
+                self.leaves.push(full[k].clone());
+            }
+            out.push_str(&format!("state {name} {{ {body}}} "));
+        }
+        out
+    }
+
+    /// Properties and assumes over the instance prefix `p` (`C.` for a chart's implicit
+    /// system, `p.` in the system of two instances); `temporal` adds `ltl`/`ctl`/`fair`.
+    fn properties(&mut self, p: &str, temporal: bool) -> String {
+        let mut out = String::new();
+        let qual = |e: String| -> String {
+            // Prefix the chart's names with the instance.
+            let mut o = String::new();
+            let mut word = String::new();
+            let flush = |w: &mut String, o: &mut String| {
+                if ["x", "y", "a", "b", "c", "f", "e0"].contains(&w.as_str()) {
+                    o.push_str(p);
+                }
+                o.push_str(w);
+                w.clear();
+            };
+            let mut in_path = false;
+            for ch in e.chars() {
+                if ch.is_alphanumeric() || ch == '_' {
+                    word.push(ch);
+                } else {
+                    if ch == '(' && word == "in" {
+                        o.push_str(&word);
+                        word.clear();
+                        o.push('(');
+                        o.push_str(p);
+                        in_path = true;
+                        continue;
+                    }
+                    if in_path {
+                        o.push_str(&word);
+                        word.clear();
+                        if ch == ')' {
+                            in_path = false;
+                        }
+                        o.push(ch);
+                        continue;
+                    }
+                    flush(&mut word, &mut o);
+                    o.push(ch);
+                }
+            }
+            if in_path {
+                o.push_str(&word);
+            } else {
+                flush(&mut word, &mut o);
+            }
+            o
+        };
+        if self.chance(40) {
+            let e = match self.pick(3) {
+                0 => format!("a != {}", self.rng.random_range(-4i64..5)),
+                1 => "!(b && c > 1)".to_string(),
+                _ => format!("x < {} || a <= 0", self.rng.random_range(-5i64..10)),
+            };
+            out.push_str(&format!("  assume {};\n", qual(e)));
+        }
+        for k in 0..1 + self.pick(3) {
+            let e = self.bool_expr(2).replace("e0", "b");
+            let e = qual(e);
+            match self.pick(4) {
+                0 | 1 => out.push_str(&format!("  invariant inv{k}: {e};\n")),
+                2 => out.push_str(&format!("  reachable reach{k}: {e};\n")),
+                _ => {
+                    let r = qual(self.bool_expr(1).replace("e0", "b"));
+                    out.push_str(&format!(
+                        "  respond resp{k}: {e} => {r} within {};\n",
+                        self.pick(3)
+                    ));
+                }
+            }
+        }
+        if temporal && !self.paths.is_empty() {
+            let k = self.pick(self.paths.len());
+            let s = format!("in({p}{})", self.paths[k]);
+            let v = qual("x > 0".to_string());
+            match self.pick(3) {
+                0 => out.push_str(&format!(
+                    "  ltl l0: G F {s};\n  ltl l1: G({v} => F !({v}));\n"
+                )),
+                1 => out.push_str(&format!("  ctl c0: AG EF {s};\n")),
+                _ => out.push_str(&format!("  fair j0: {s};\n  ltl l2: F G !({v});\n")),
+            }
+        }
+        out
+    }
+
+    /// A whole model: one chart, or a system of two connected instances.
+    pub fn model(&mut self) -> String {
+        self.model_with(false)
+    }
+
+    /// A whole model with properties and assumes (and, if `temporal`, temporal properties).
+    pub fn model_with(&mut self, props: bool) -> String {
+        let body = self.level("", 0, false);
+        let two = self.chance(30);
+        let temporal = props && self.chance(20);
+        let chart = format!(
+            "chart C {{\n  input event e0;\n  input event e1;\n  input a: int[-4..4] = 0;\n  input b: bool = false;\n  input c: int[-2..3] = 1;\n  output x: int[-20..20] = 0;\n  output y: int[0..7] = 0;\n  local f: bool = false;\n  local event le;\n  output event oe;\n  {body}\n}}\n"
+        );
+        if two {
+            let sys_props = if props {
+                self.properties("p.", temporal)
+            } else {
+                String::new()
+            };
+            format!("{chart}\nsystem Two {{\n  instance p: C;\n  instance q: C;\n  connect p.x -> q.c;\n  connect p.oe -> q.e1;\n{sys_props}}}\n")
+        } else if props {
+            let sys_props = self.properties("p.", temporal);
+            format!("{chart}\nsystem One {{\n  instance p: C;\n{sys_props}}}\n")
+        } else {
+            chart
+        }
+    }
+}
+
+impl Gen {
+    /// A random value of a slot (its whole range).
+    pub fn value(&mut self, s: &statecheck_ir::Slot) -> i64 {
+        self.rng.random_range(s.lo..=s.hi)
+    }
+}

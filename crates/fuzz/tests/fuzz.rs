@@ -1,0 +1,97 @@
+//! The short runs of the fuzzers that are part of the test suite (the long runs are
+//! `scripts/fuzz.sh`): a bounded count of mutated inputs per target with no failure, the
+//! runner's detection of every kind of failure on its self-test target, and a few random
+//! models through the differential fuzzer.
+
+use statecheck_fuzz::runner::{self, Config};
+use statecheck_fuzz::targets::{self, Target};
+use std::path::{Path, PathBuf};
+use std::time::Duration;
+
+fn root() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("../..")
+}
+
+#[test]
+fn every_target_survives_a_short_run() {
+    for t in targets::ALL {
+        let s = runner::run_in_process(t, &root(), 7, 300);
+        assert_eq!(s.executions, 300);
+        assert!(s.failures.is_empty(), "{}: {:?}", t.name(), s.failures);
+    }
+}
+
+#[test]
+fn the_seeds_are_loaded() {
+    // At least ten seeds per target (the repository's models, scenarios, AIGER exports).
+    for t in targets::ALL {
+        let (_, seeds) = statecheck_fuzz::corpus::load(t, &root());
+        assert!(seeds.len() >= 10, "{}: {} seeds", t.name(), seeds.len());
+    }
+    let (ctx, seeds) = statecheck_fuzz::corpus::load(Target::Scenario, &root());
+    // The 26 scenarios of examples/ and tests/ when this test was written (27 files but
+    // tests/imports/app/run.scn, whose model imports files: the corpus does not resolve
+    // imports); more as scenarios are added.
+    assert!(seeds.len() >= 26, "{} scenario seeds", seeds.len());
+    // Every seed scenario reads against the model it was paired with.
+    for s in &seeds {
+        let text = String::from_utf8_lossy(&s.bytes);
+        assert!(statecheck_sim::scenario::parse(&text, &ctx.programs[s.ctx]).is_ok());
+    }
+}
+
+#[test]
+fn the_runner_catches_panics_aborts_overflows_and_timeouts() {
+    // The self-test inputs cycle through: ok, panic, abort, hang, deep (a stack overflow),
+    // broken (an `Err`). Twelve inputs over two workers: each kind twice.
+    let out = std::env::temp_dir().join(format!("statecheck-fuzz-selftest-{}", std::process::id()));
+    let cfg = Config {
+        target: Target::SelfTest,
+        seed: 1,
+        executions: 12,
+        duration: None,
+        jobs: 2,
+        timeout: Duration::from_millis(700),
+        out: out.clone(),
+        root: root(),
+        exe: PathBuf::from(env!("CARGO_BIN_EXE_statecheck-fuzz")),
+    };
+    let s = runner::run(&cfg);
+    assert_eq!(s.executions, 12);
+    assert_eq!(s.panics, 2);
+    assert_eq!(
+        s.aborts, 4,
+        "two aborts and two stack overflows: {:?}",
+        s.failures
+    );
+    assert_eq!(s.timeouts, 2);
+    assert_eq!(s.violations, 2);
+    let mut blamed: Vec<u64> = s.failures.iter().map(|f| f.0).collect();
+    blamed.sort();
+    assert_eq!(blamed, vec![1, 2, 3, 4, 5, 7, 8, 9, 10, 11]);
+    // Each failing input is saved with its rebuild command.
+    let saved = std::fs::read_dir(out.join("crashes"))
+        .map(|d| d.count())
+        .unwrap_or(0)
+        + std::fs::read_dir(out.join("timeouts"))
+            .map(|d| d.count())
+            .unwrap_or(0);
+    assert_eq!(saved, 20);
+    let _ = std::fs::remove_dir_all(&out);
+}
+
+#[test]
+fn random_models_agree_everywhere() {
+    // Eight random models: verdicts, replays, C traces (and SPIN when installed).
+    let spin = statecheck_fuzz::diff::spin_available();
+    let dir = statecheck_fuzz::diff::temp_dir("test");
+    let r = statecheck_fuzz::diff::batch(11, 0, 8, false, spin, &dir);
+    assert!(r.failures.is_empty(), "{}", r.failures.join("\n----\n"));
+    assert!(
+        r.compile_failures.is_empty(),
+        "{}",
+        r.compile_failures.join("\n----\n")
+    );
+    assert_eq!(r.models, 8);
+    assert!(r.c_models + r.rejected == 8, "{r:?}");
+}
