@@ -16,6 +16,7 @@ pub mod lint;
 pub mod model;
 pub mod ops;
 mod property;
+mod rate;
 mod rebase;
 mod scope;
 mod suggest;
@@ -107,6 +108,7 @@ pub fn check(file: &ast::File) -> (Model, Vec<Diagnostic>) {
             connections: Vec::new(),
             order: vec![0],
             assumes: Vec::new(),
+            rates: Vec::new(),
             properties,
             span: c.name.span,
         });

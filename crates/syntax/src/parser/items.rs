@@ -561,6 +561,7 @@ impl Parser<'_> {
             connections: Vec::new(),
             order: Vec::new(),
             assumes: Vec::new(),
+            rates: Vec::new(),
             properties: Vec::new(),
             observers: Vec::new(),
             requirements: Vec::new(),
@@ -587,6 +588,7 @@ impl Parser<'_> {
                 Tok::Ident if self.at_temporal_decl() => {
                     self.temporal_property().map(|p| sys.properties.push(p))
                 }
+                Tok::Ident if self.at_rate_decl() => self.rate().map(|r| sys.rates.push(r)),
                 Tok::Kw(Kw::Instance) => self.instance().map(|i| sys.instances.push(i)),
                 Tok::Kw(Kw::Connect) => self.connection().map(|c| sys.connections.push(c)),
                 Tok::Kw(Kw::Order) => self.order().map(|o| sys.order.push(o)),
@@ -621,7 +623,7 @@ impl Parser<'_> {
                 }
                 _ => {
                     self.unexpected(
-                        "a system element (`instance`, `connect`, `order`, `assume`, a property or `observer`)",
+                        "a system element (`instance`, `connect`, `order`, `assume`, `rate`, a property or `observer`)",
                         None,
                     );
                     Ok(())
