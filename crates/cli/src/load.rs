@@ -107,8 +107,6 @@ pub struct Loaded {
     pub source: String,
     /// The files of the program, to name the file of a span.
     pub sources: Sources,
-    /// The merged syntax tree the model was checked from.
-    pub file: statecheck_syntax::ast::File,
     /// The checked model.
     pub model: Model,
     /// All diagnostics (errors, warnings).
@@ -192,7 +190,6 @@ pub fn load(path: &str, show_warnings: bool) -> Result<Loaded> {
         path: path.to_string(),
         source,
         sources,
-        file,
         model,
         diags,
     })

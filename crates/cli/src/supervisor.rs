@@ -15,9 +15,8 @@ macro_rules! out {
 /// Read a model and build the synthesis problem of one of its systems.
 pub fn problem(path: &str, system: Option<&str>) -> Result<Problem> {
     let loaded = load::load(path, false)?;
-    let file = &loaded.file;
-    let sys = extract::find_system(file, system).map_err(|e| anyhow!("{path}: {e}"))?;
-    extract::extract(file, sys).map_err(|diags| {
+    let sys = extract::find_system(&loaded.model, system).map_err(|e| anyhow!("{path}: {e}"))?;
+    extract::extract(&loaded.model, sys).map_err(|diags| {
         diag::eprint_sources(&loaded.sources, &diags);
         anyhow::Error::new(load::ModelErrors)
     })

@@ -8,7 +8,7 @@ use crate::c::{Names, RUNTIME};
 use crate::c_expr::{lets_in_expr, CEmit};
 use crate::common::Source;
 use statecheck_ir::view::TraceView;
-use statecheck_ir::{ExprId, Program, PropertyKind, ValueKind};
+use statecheck_ir::{ExprId, Goal, Program, ValueKind};
 use std::collections::BTreeSet;
 use std::fmt::Write;
 
@@ -88,27 +88,23 @@ pub fn harness(p: &Program, src: &Source, obs: &TraceView, prefix: &str) -> Stri
     let mut props = String::new();
     let mut reach_names = Vec::new();
     for prop in &p.properties {
-        match &prop.kind {
-            PropertyKind::Invariant { expr, assuming } => {
-                let e = ix(*expr, &mut exprs);
-                let cond = match assuming {
-                    Some(a) => format!("x_{}(v) && !x_{e}(v)", ix(*a, &mut exprs)),
+        match prop.goal {
+            Goal::Always { when, holds } => {
+                let e = ix(holds, &mut exprs);
+                let cond = match when {
+                    Some(a) => format!("x_{}(v) && !x_{e}(v)", ix(a, &mut exprs)),
                     None => format!("!x_{e}(v)"),
                 };
                 let _ = writeln!(props, "    if ({cond}) return \"{}\";", esc(&prop.name));
             }
-            PropertyKind::Reachable { expr } => {
-                let e = ix(*expr, &mut exprs);
+            Goal::Reach { target } => {
+                let e = ix(target, &mut exprs);
                 let r = reach_names.len();
                 reach_names.push(prop.name.clone());
                 let _ = writeln!(
                     props,
                     "    if (reached[{r}] < 0 && x_{e}(v)) reached[{r}] = (int64_t)tick;"
                 );
-            }
-            PropertyKind::Respond { ok, .. } | PropertyKind::Observer { ok, .. } => {
-                let e = ix(*ok, &mut exprs);
-                let _ = writeln!(props, "    if (!x_{e}(v)) return \"{}\";", esc(&prop.name));
             }
         }
     }

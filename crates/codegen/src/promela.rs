@@ -16,7 +16,7 @@
 use crate::c_expr::{else_if_chain, lets_in_stmts, pure};
 use crate::common::{area, slot_fields, Area, Source};
 use statecheck_ir::{BinOp, UnOp};
-use statecheck_ir::{Node, Program, PropertyKind, SlotId, Stmt};
+use statecheck_ir::{Goal, Node, Program, SlotId, Stmt};
 use std::collections::BTreeSet;
 use std::fmt::Write;
 
@@ -128,18 +128,15 @@ pub fn export(p: &Program, src: &Source, opts: &PromelaOptions) -> Result<String
     let mut any_selected = false;
     for prop in &p.properties {
         let all = opts.properties.is_empty();
-        let (cond, by_default) = match &prop.kind {
-            PropertyKind::Invariant { expr, assuming } => {
-                let e = g.pure_expr(*expr)?;
-                match assuming {
-                    Some(a) => (format!("!({}) || ({e})", g.pure_expr(*a)?), true),
+        let (cond, by_default) = match prop.goal {
+            Goal::Always { when, holds } => {
+                let e = g.pure_expr(holds)?;
+                match when {
+                    Some(a) => (format!("!({}) || ({e})", g.pure_expr(a)?), true),
                     None => (e, true),
                 }
             }
-            PropertyKind::Reachable { expr } => (format!("!({})", g.pure_expr(*expr)?), false),
-            PropertyKind::Respond { ok, .. } | PropertyKind::Observer { ok, .. } => {
-                (g.pure_expr(*ok)?, true)
-            }
+            Goal::Reach { target } => (format!("!({})", g.pure_expr(target)?), false),
         };
         if (all && by_default) || selected(&prop.name) {
             any_selected = true;

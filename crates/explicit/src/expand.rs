@@ -356,13 +356,12 @@ impl<'a, 'p> StateCheck<'a, 'p> {
 /// property — exactly the simulator's reading: an expression whose evaluation fails is false.
 pub(crate) fn decides(m: &mut Machine, check: Check) -> bool {
     match check {
-        // The invariant first: it usually holds, and then `assuming` need not be evaluated
-        // (both are pure, so the order does not change the answer).
-        Check::Invariant { expr, assuming } => {
-            !m.holds(expr.code) && assuming.is_none_or(|a| m.holds(a.code))
+        // `holds` first: it usually holds, and then `when` need not be evaluated (both are
+        // pure, so the order does not change the answer).
+        Check::Always { when, holds } => {
+            !m.holds(holds.code) && when.is_none_or(|a| m.holds(a.code))
         }
-        Check::Reachable { expr } => m.holds(expr.code),
-        Check::Ok { ok } => !m.holds(ok.code),
+        Check::Reach { target } => m.holds(target.code),
         Check::Builtin(_) => false,
     }
 }

@@ -1,7 +1,7 @@
 //! The properties one run checks: the system's own (invariants, reachability, bounded response,
 //! observers) and the built-in ones every model has.
 
-use statecheck_ir::{ExprId, Prepared, Program, PropertyKind};
+use statecheck_ir::{ExprId, Goal, Prepared, Program};
 
 use statecheck_ir::verdict::{self, Builtin, Source};
 pub use statecheck_ir::verdict::{PropKind, BUILTINS};
@@ -25,12 +25,11 @@ impl Expr {
 /// How a property is decided on one transition.
 #[derive(Clone, Copy, Debug)]
 pub(crate) enum Check {
-    /// Violated when `assuming` holds and `expr` does not.
-    Invariant { expr: Expr, assuming: Option<Expr> },
-    /// Reached when `expr` holds.
-    Reachable { expr: Expr },
-    /// Violated when `ok` does not hold (respond monitors, observers).
-    Ok { ok: Expr },
+    /// The property's goal ([`Goal`]) with its expressions compiled: violated when `when`
+    /// holds and `holds` does not.
+    Always { when: Option<Expr>, holds: Expr },
+    /// Reached when `target` holds.
+    Reach { target: Expr },
     /// Violated by a run-time error whose built-in property has this name.
     Builtin(Builtin),
 }
@@ -39,12 +38,10 @@ impl Check {
     /// The expressions it evaluates.
     fn exprs(self) -> Vec<ExprId> {
         match self {
-            Check::Invariant { expr, assuming } => std::iter::once(expr)
-                .chain(assuming)
-                .map(|e| e.id)
-                .collect(),
-            Check::Reachable { expr } => vec![expr.id],
-            Check::Ok { ok } => vec![ok.id],
+            Check::Always { when, holds } => {
+                std::iter::once(holds).chain(when).map(|e| e.id).collect()
+            }
+            Check::Reach { target } => vec![target.id],
             Check::Builtin(_) => Vec::new(),
         }
     }
@@ -101,15 +98,12 @@ fn specs(program: &Program, refs: Vec<verdict::PropertyRef>) -> Vec<Spec> {
         .map(|r| {
             let check = match r.source {
                 Source::Builtin(b) => Check::Builtin(b),
-                Source::Own(i) => match &program.properties[i].kind {
-                    PropertyKind::Invariant { expr, assuming } => Check::Invariant {
-                        expr: e(expr),
-                        assuming: assuming.as_ref().map(e),
+                Source::Own(i) => match &program.properties[i].goal {
+                    Goal::Always { when, holds } => Check::Always {
+                        when: when.as_ref().map(e),
+                        holds: e(holds),
                     },
-                    PropertyKind::Reachable { expr } => Check::Reachable { expr: e(expr) },
-                    PropertyKind::Respond { ok, .. } | PropertyKind::Observer { ok, .. } => {
-                        Check::Ok { ok: e(ok) }
-                    }
+                    Goal::Reach { target } => Check::Reach { target: e(target) },
                 },
             };
             Spec {

@@ -353,13 +353,68 @@ pub enum PropertyKind {
     },
 }
 
+/// What every state after a tick must satisfy for a property: compiled from the property by
+/// the lowering, so that every consumer (simulator, engines, code generators) reads a property
+/// the same way and none re-decides what an invariant, a `respond` or an observer means.
+///
+/// Each expression is read as a truth value: non-zero is true, and an expression whose
+/// evaluation fails reads as **false** ([`crate::Machine::holds`]). An invariant whose
+/// expression fails is therefore violated, and a target whose expression fails is not reached.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Goal {
+    /// Violated by a state where `when` holds (every state, without one) and `holds` does not:
+    /// invariants (`when` is their `assuming`), bounded response (its monitor within the
+    /// bound) and observers (not in `error`).
+    Always {
+        /// The restriction, if any.
+        when: Option<ExprId>,
+        /// What must hold.
+        holds: ExprId,
+    },
+    /// Witnessed by a state where `target` holds (`reachable`).
+    Reach {
+        /// The target.
+        target: ExprId,
+    },
+}
+
+impl Goal {
+    /// True when a state decides the goal: it violates an `Always` or witnesses a `Reach`.
+    /// `holds` reads one expression on that state (evaluation failure reads as false).
+    #[inline]
+    pub fn decided_by(self, mut holds: impl FnMut(ExprId) -> bool) -> bool {
+        match self {
+            // `holds` first: it usually holds, and then `when` need not be read (both are
+            // pure, so the order does not change the answer).
+            Goal::Always { when, holds: h } => !holds(h) && when.is_none_or(holds),
+            Goal::Reach { target } => holds(target),
+        }
+    }
+
+    /// True for a reachability goal (decided by a witness, not a violation).
+    pub fn is_reach(self) -> bool {
+        matches!(self, Goal::Reach { .. })
+    }
+
+    /// The expressions the goal reads: `holds` then `when`, or the target.
+    pub fn exprs(self) -> impl Iterator<Item = ExprId> {
+        let (a, b) = match self {
+            Goal::Always { when, holds } => (holds, when),
+            Goal::Reach { target } => (target, None),
+        };
+        std::iter::once(a).chain(b)
+    }
+}
+
 /// A property of the system.
 #[derive(Clone, Debug)]
 pub struct Property {
     /// Its name (a contract).
     pub name: String,
-    /// What it states.
+    /// What it states, as written (for reports).
     pub kind: PropertyKind,
+    /// What it asks of every state after a tick: the form every consumer reads.
+    pub goal: Goal,
     /// Where it was declared.
     pub span: Span,
 }

@@ -61,7 +61,7 @@ pub fn check(file: &ast::File) -> (Model, Vec<Diagnostic>) {
         .collect();
     let skeletons: Vec<_> = chart_asts
         .iter()
-        .map(|c| chart::skeleton(&mut ck, c, model::ChartRole::Normal))
+        .map(|c| chart::skeleton(&mut ck, c, model::ChartRole::of(c)))
         .collect();
     let mut charts: Vec<Chart> = Vec::new();
     for (sk, c) in skeletons.into_iter().zip(&chart_asts) {
@@ -103,6 +103,7 @@ pub fn check(file: &ast::File) -> (Model, Vec<Diagnostic>) {
             instances: vec![Instance {
                 name: c.name.name.clone(),
                 chart: id as ChartId,
+                index: None,
                 span: c.name.span,
             }],
             connections: Vec::new(),
@@ -110,6 +111,7 @@ pub fn check(file: &ast::File) -> (Model, Vec<Diagnostic>) {
             assumes: Vec::new(),
             rates: Vec::new(),
             properties,
+            requirements: Vec::new(),
             span: c.name.span,
         });
     }

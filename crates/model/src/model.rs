@@ -4,7 +4,8 @@
 
 use crate::types::{EnumId, Type};
 use statecheck_base::Span;
-use statecheck_syntax::ast::{BinOp, HistoryKind, UnOp, VarKind};
+use statecheck_syntax::ast::HistoryKind;
+pub use statecheck_syntax::ast::{BinOp, Control, UnOp, VarKind};
 
 /// Index of a chart in [`Model::charts`].
 pub type ChartId = u32;
@@ -57,6 +58,21 @@ pub enum ChartRole {
     Normal,
     /// An assertion chart: its property is that its state `error` is never entered.
     Observer,
+    /// `plant chart`: an automaton of a synthesis problem (`docs/synthesis.md`).
+    Plant,
+    /// `requirement chart`: an automaton a synthesized supervisor must enforce.
+    Requirement,
+}
+
+impl ChartRole {
+    /// The role a top-level chart declares (`plant chart`, `requirement chart`, or none).
+    pub fn of(c: &statecheck_syntax::ast::Chart) -> ChartRole {
+        match c.role.as_ref().map(|r| r.name.as_str()) {
+            Some("plant") => ChartRole::Plant,
+            Some("requirement") => ChartRole::Requirement,
+            _ => ChartRole::Normal,
+        }
+    }
 }
 
 /// A checked chart.
@@ -91,6 +107,8 @@ pub struct Var {
     pub ty: Type,
     /// Initial value (for inputs: the value before a scenario sets one).
     pub init: i64,
+    /// `controllable`/`uncontrollable` (events of plant and requirement charts).
+    pub control: Option<Control>,
     /// Where it was declared.
     pub span: Span,
 }
@@ -139,6 +157,8 @@ pub struct StateNode {
     pub initial_action: Vec<Stmt>,
     /// Outgoing transitions in firing order (priority, then text order).
     pub transitions: Vec<TransId>,
+    /// Written `marked state`: an accepting state for synthesis.
+    pub marked: bool,
     /// Where it was declared (its name).
     pub span: Span,
 }
@@ -364,6 +384,8 @@ pub struct Instance {
     pub name: String,
     /// The chart.
     pub chart: ChartId,
+    /// Its index when it is an element of an instance array (`name[index]`).
+    pub index: Option<u32>,
     /// Where it was declared.
     pub span: Span,
 }
@@ -411,8 +433,36 @@ pub struct System {
     pub rates: Vec<InputRate>,
     /// Properties (system-level, then each instance's chart properties).
     pub properties: Vec<Property>,
+    /// State-based synthesis requirements (`docs/synthesis.md`).
+    pub requirements: Vec<Requirement>,
     /// Where it was declared.
     pub span: Span,
+}
+
+/// A checked state-based synthesis requirement.
+#[derive(Clone, Debug)]
+pub struct Requirement {
+    /// What it requires.
+    pub kind: RequirementKind,
+    /// Where it was written.
+    pub span: Span,
+}
+
+/// The kinds of [`Requirement`].
+#[derive(Clone, Debug)]
+pub enum RequirementKind {
+    /// `requirement never (cond);`: no reachable state satisfies `cond`.
+    Never(Expr),
+    /// `requirement e needs (cond);`: event `e` may occur only where `cond` holds. Events
+    /// synchronise by name across the system's automata, so the event stays a name.
+    Needs {
+        /// The event's name.
+        event: String,
+        /// Where the event was written.
+        event_span: Span,
+        /// The condition.
+        cond: Expr,
+    },
 }
 
 impl Model {

@@ -3,7 +3,9 @@
 
 use crate::chart;
 use crate::expr::{type_name, ExprChecker};
-use crate::model::{Chart, ChartRole, Connection, Instance, Property, System};
+use crate::model::{
+    Chart, ChartRole, Connection, Instance, Property, Requirement, RequirementKind, System,
+};
 use crate::scope::{InstanceGroup, Scope};
 use statecheck_base::Diagnostic;
 use statecheck_syntax::ast::{self, VarKind};
@@ -61,6 +63,7 @@ pub(crate) fn check_system(
                 instances.push(Instance {
                     name: inst.name.name.clone(),
                     chart,
+                    index: None,
                     span: inst.name.span,
                 });
                 None
@@ -82,6 +85,7 @@ pub(crate) fn check_system(
                     instances.push(Instance {
                         name: format!("{}[{i}]", inst.name.name),
                         chart,
+                        index: Some(i),
                         span: inst.name.span,
                     });
                 }
@@ -119,6 +123,7 @@ pub(crate) fn check_system(
         instances.push(Instance {
             name: name.clone(),
             chart: id,
+            index: None,
             span: s.name.span,
         });
         groups.insert(
@@ -236,6 +241,21 @@ pub(crate) fn check_system(
             );
         }
     }
+    let requirements = s
+        .requirements
+        .iter()
+        .map(|r| Requirement {
+            kind: match &r.kind {
+                ast::RequirementKind::Never(e) => RequirementKind::Never(ck.check_bool(&scope, e)),
+                ast::RequirementKind::Needs { event, cond } => RequirementKind::Needs {
+                    event: event.name.clone(),
+                    event_span: event.span,
+                    cond: ck.check_bool(&scope, cond),
+                },
+            },
+            span: r.span,
+        })
+        .collect();
     System {
         name: s.name.name.clone(),
         implicit: false,
@@ -245,6 +265,7 @@ pub(crate) fn check_system(
         assumes,
         rates,
         properties,
+        requirements,
         span: s.name.span,
     }
 }

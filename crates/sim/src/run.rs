@@ -2,7 +2,7 @@
 //! on every tick.
 
 use crate::scenario::Scenario;
-use statecheck_ir::{Machine, Program, PropertyKind, RuntimeError};
+use statecheck_ir::{Machine, Program, RuntimeError};
 
 /// One tick of a trace: every slot's value right after the tick (state, the tick's inputs and
 /// its temporaries such as present local events).
@@ -337,7 +337,7 @@ pub fn unreached(program: &Program) -> Vec<(String, Option<u64>)> {
     program
         .properties
         .iter()
-        .filter(|p| matches!(p.kind, PropertyKind::Reachable { .. }))
+        .filter(|p| p.goal.is_reach())
         .map(|p| (p.name.clone(), None))
         .collect()
 }
@@ -353,23 +353,13 @@ fn first_violation(
     let mut holds = |e| m.eval(e).is_ok_and(|v| v != 0);
     let mut r = 0;
     for prop in &p.properties {
-        match &prop.kind {
-            PropertyKind::Invariant { expr, assuming } => {
-                if assuming.is_none_or(&mut holds) && !holds(*expr) {
-                    return Some(prop.name.clone());
-                }
+        if prop.goal.is_reach() {
+            if reached[r].1.is_none() && prop.goal.decided_by(&mut holds) {
+                reached[r].1 = Some(tick);
             }
-            PropertyKind::Reachable { expr } => {
-                if reached[r].1.is_none() && holds(*expr) {
-                    reached[r].1 = Some(tick);
-                }
-                r += 1;
-            }
-            PropertyKind::Respond { ok, .. } | PropertyKind::Observer { ok, .. } => {
-                if !holds(*ok) {
-                    return Some(prop.name.clone());
-                }
-            }
+            r += 1;
+        } else if prop.goal.decided_by(&mut holds) {
+            return Some(prop.name.clone());
         }
     }
     None

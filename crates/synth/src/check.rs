@@ -22,7 +22,7 @@ use crate::error::Error;
 use crate::problem::{EventId, Kind, Problem};
 use statecheck_ir::{Machine, Program, ValueKind};
 use statecheck_model::Model;
-use statecheck_syntax::ast::VarKind;
+use statecheck_model::VarKind;
 use std::collections::{HashMap, VecDeque};
 
 /// What the check found.

@@ -1,6 +1,7 @@
-//! From the AST of a `system` of `plant`/`requirement` charts to a [`Problem`].
+//! From a checked `system` of `plant`/`requirement` charts to a [`Problem`].
 //!
-//! The rules (reported as diagnostics `E0701`–`E0712`, all at once): every instance is a
+//! Synthesis reads the checked model (names resolved once, by the checker), never the syntax
+//! tree. The rules (reported as diagnostics `E0701`–`E0712`, all at once): every instance is a
 //! single (non-array) instance of a `plant chart` or `requirement chart`; such a chart
 //! declares only `controllable event`/`uncontrollable event`s, is flat (states without
 //! children), has one `initial` state, and its transitions are `on EVENT -> STATE;` with no
@@ -9,34 +10,27 @@
 
 use crate::problem::{Automaton, Event, EventId, Kind, Needs, Pred, Problem, NONE};
 use statecheck_base::{Diagnostic, Span};
-use statecheck_syntax::ast::{self, Control, Expr, Item, RequirementKind, Trigger};
+use statecheck_model::{
+    BinOp, Chart, ChartRole, Control, Dest, Expr, ExprKind, Model, NodeKind, RequirementKind,
+    System, Trigger, Type, UnOp,
+};
 use std::collections::HashMap;
 
-/// Choose the system: by name, else the only `system` of the file.
-pub fn find_system<'f>(
-    file: &'f ast::File,
-    name: Option<&str>,
-) -> Result<&'f ast::System, crate::Error> {
+/// Choose the system: by name, else the only `system` the file declares.
+pub fn find_system<'m>(model: &'m Model, name: Option<&str>) -> Result<&'m System, crate::Error> {
     let err = |s: String| crate::Error::new(crate::ErrorKind::System(s));
-    let systems: Vec<&ast::System> = file
-        .items
-        .iter()
-        .filter_map(|i| match i {
-            Item::System(s) => Some(s),
-            _ => None,
-        })
-        .collect();
+    let systems: Vec<&System> = model.systems.iter().filter(|s| !s.implicit).collect();
     let names = || {
         systems
             .iter()
-            .map(|s| s.name.name.as_str())
+            .map(|s| s.name.as_str())
             .collect::<Vec<_>>()
             .join(", ")
     };
     match name {
         Some(n) => systems
             .iter()
-            .find(|s| s.name.name == n)
+            .find(|s| s.name == n)
             .copied()
             .ok_or_else(|| err(format!("no system named `{n}`; available: {}", names()))),
         None => match systems.as_slice() {
@@ -64,16 +58,9 @@ impl Ctx {
     }
 }
 
-/// Build the synthesis problem of `system`. Errors are returned all together.
-pub fn extract(file: &ast::File, system: &ast::System) -> Result<Problem, Vec<Diagnostic>> {
-    let charts: HashMap<&str, &ast::Chart> = file
-        .items
-        .iter()
-        .filter_map(|i| match i {
-            Item::Chart(c) => Some((c.name.name.as_str(), c)),
-            _ => None,
-        })
-        .collect();
+/// Build the synthesis problem of `system` of a checked model. Errors are returned all
+/// together.
+pub fn extract(model: &Model, system: &System) -> Result<Problem, Vec<Diagnostic>> {
     let mut cx = Ctx {
         events: Vec::new(),
         event_ids: HashMap::new(),
@@ -81,32 +68,29 @@ pub fn extract(file: &ast::File, system: &ast::System) -> Result<Problem, Vec<Di
     };
     // Pass 1: the alphabet, in order of first declaration.
     let mut inst_charts = Vec::new();
-    for inst in &system.instances {
-        if inst.count.is_some() {
-            cx.err(
-                "E0701",
-                "instance arrays are not supported in synthesis systems (events synchronise by name)",
-                inst.span,
-            );
+    for (i, inst) in system.instances.iter().enumerate() {
+        if let Some(k) = inst.index {
+            if k == 0 {
+                cx.err(
+                    "E0701",
+                    "instance arrays are not supported in synthesis systems (events synchronise by name)",
+                    inst.span,
+                );
+            }
             continue;
         }
-        let Some(chart) = charts.get(inst.chart.name.as_str()) else {
-            cx.err(
-                "E0701",
-                format!("no chart named `{}`", inst.chart.name),
-                inst.chart.span,
-            );
+        let Some(chart) = model.charts.get(inst.chart as usize) else {
             continue;
         };
-        let kind = match chart.role.as_ref().map(|r| r.name.as_str()) {
-            Some("plant") => Kind::Plant,
-            Some("requirement") => Kind::Requirement,
-            _ => {
+        let kind = match chart.role {
+            ChartRole::Plant => Kind::Plant,
+            ChartRole::Requirement => Kind::Requirement,
+            ChartRole::Normal | ChartRole::Observer => {
                 cx.err(
                     "E0702",
                     format!(
                         "`{}` is not a `plant chart` or `requirement chart`; synthesis systems hold only those",
-                        chart.name.name
+                        chart.name
                     ),
                     inst.span,
                 );
@@ -123,7 +107,7 @@ pub fn extract(file: &ast::File, system: &ast::System) -> Result<Problem, Vec<Di
                 continue;
             };
             let controllable = control == Control::Controllable;
-            match cx.event_ids.get(&v.name.name) {
+            match cx.event_ids.get(&v.name) {
                 Some(&(id, first)) => {
                     if cx.events[id as usize].controllable != controllable {
                         cx.diags.push(
@@ -131,60 +115,71 @@ pub fn extract(file: &ast::File, system: &ast::System) -> Result<Problem, Vec<Di
                                 "E0704",
                                 format!(
                                     "event `{}` is declared both controllable and uncontrollable",
-                                    v.name.name
+                                    v.name
                                 ),
-                                v.name.span,
+                                v.span,
                             )
                             .with_secondary(first, "first declared here"),
                         );
                     }
                 }
                 None => {
-                    if v.name.name == "none" {
+                    if v.name == "none" {
                         cx.err(
                             "E0705",
                             "`none` is reserved (it means \"no event\" in the emitted chart)",
-                            v.name.span,
+                            v.span,
                         );
                     }
                     let id = cx.events.len() as EventId;
-                    cx.event_ids.insert(v.name.name.clone(), (id, v.name.span));
+                    cx.event_ids.insert(v.name.clone(), (id, v.span));
                     cx.events.push(Event {
-                        name: v.name.name.clone(),
+                        name: v.name.clone(),
                         controllable,
                     });
                 }
             }
         }
-        inst_charts.push((inst, *chart, kind));
+        inst_charts.push((i as u32, &inst.name, chart, kind));
     }
-    // Pass 2: automata.
+    // Pass 2: automata, and which instance each one is.
     let n_events = cx.events.len();
     let mut automata = Vec::new();
-    for (inst, chart, kind) in inst_charts {
-        if let Some(a) = automaton(&mut cx, inst, chart, kind, n_events) {
+    let mut of_instance: HashMap<u32, u32> = HashMap::new();
+    for (i, name, chart, kind) in inst_charts {
+        if let Some(a) = automaton(&mut cx, name, chart, kind, n_events) {
+            of_instance.insert(i, automata.len() as u32);
             automata.push(a);
         }
     }
     // Pass 3: state requirements.
     let mut never = Vec::new();
     let mut needs = Vec::new();
+    let states = States {
+        model,
+        system,
+        of_instance: &of_instance,
+    };
     for r in &system.requirements {
         match &r.kind {
             RequirementKind::Never(e) => {
-                if let Some(p) = pred(&mut cx, &automata, e) {
+                if let Some(p) = pred(&mut cx, &states, e) {
                     never.push(p);
                 }
             }
-            RequirementKind::Needs { event, cond } => {
-                let id = cx.event_ids.get(&event.name).map(|(i, _)| *i);
-                let p = pred(&mut cx, &automata, cond);
+            RequirementKind::Needs {
+                event,
+                event_span,
+                cond,
+            } => {
+                let id = cx.event_ids.get(event).map(|(i, _)| *i);
+                let p = pred(&mut cx, &states, cond);
                 match (id, p) {
                     (Some(event), Some(cond)) => needs.push(Needs { event, cond }),
                     (None, _) => cx.err(
                         "E0706",
-                        format!("no event `{}` in this system", event.name),
-                        event.span,
+                        format!("no event `{event}` in this system"),
+                        *event_span,
                     ),
                     _ => {}
                 }
@@ -195,14 +190,14 @@ pub fn extract(file: &ast::File, system: &ast::System) -> Result<Problem, Vec<Di
         cx.err(
             "E0707",
             "a synthesis system needs at least one plant",
-            system.name.span,
+            system.span,
         );
     }
     if !cx.diags.is_empty() {
         return Err(cx.diags);
     }
     Ok(Problem {
-        name: system.name.name.clone(),
+        name: system.name.clone(),
         events: cx.events,
         automata,
         never,
@@ -210,111 +205,110 @@ pub fn extract(file: &ast::File, system: &ast::System) -> Result<Problem, Vec<Di
     })
 }
 
+/// The automaton of one instance of a flat plant or requirement chart.
 fn automaton(
     cx: &mut Ctx,
-    inst: &ast::Instance,
-    chart: &ast::Chart,
+    name: &str,
+    chart: &Chart,
     kind: Kind,
     n_events: usize,
 ) -> Option<Automaton> {
-    let body = &chart.body;
     let before = cx.diags.len();
-    if !body.regions.is_empty() || !body.junctions.is_empty() || !body.transitions.is_empty() {
+    let root = &chart.states[0];
+    let (children, initial) = match &root.kind {
+        NodeKind::Or {
+            children, initial, ..
+        } => (children.as_slice(), *initial as u32),
+        NodeKind::And { .. } => {
+            cx.err(
+                "E0708",
+                "plant and requirement charts are flat: states and their `on EVENT -> STATE;` transitions only",
+                chart.span,
+            );
+            return None;
+        }
+        NodeKind::Simple => {
+            cx.err("E0709", "the chart has no states", chart.span);
+            return None;
+        }
+    };
+    if !root.transitions.is_empty() {
         cx.err(
             "E0708",
             "plant and requirement charts are flat: states and their `on EVENT -> STATE;` transitions only",
-            chart.name.span,
+            chart.span,
         );
     }
-    let locs: Vec<String> = body.states.iter().map(|s| s.name.name.clone()).collect();
-    let index: HashMap<&str, u32> = locs
+    let locs: Vec<String> = children
         .iter()
-        .enumerate()
-        .map(|(i, n)| (n.as_str(), i as u32))
+        .map(|&c| chart.states[c as usize].name.clone())
         .collect();
-    let initial = match body.initial.as_slice() {
-        [one] => match index.get(one.target.name.as_str()) {
-            Some(i) => *i,
-            None => {
-                cx.err(
-                    "E0709",
-                    format!("no state `{}`", one.target.name),
-                    one.target.span,
-                );
-                0
-            }
-        },
-        _ => {
-            cx.err(
-                "E0709",
-                "the chart needs exactly one `initial` state",
-                chart.name.span,
-            );
-            0
-        }
-    };
+    let loc_of = |state| children.iter().position(|&c| c == state).map(|l| l as u32);
     let mut next = vec![NONE; locs.len() * n_events];
     let mut alphabet: Vec<EventId> = chart
         .vars
         .iter()
-        .filter_map(|v| cx.event_ids.get(&v.name.name).map(|(i, _)| *i))
+        .filter_map(|v| cx.event_ids.get(&v.name).map(|(i, _)| *i))
         .collect();
     alphabet.sort_unstable();
     alphabet.dedup();
-    for (si, s) in body.states.iter().enumerate() {
-        let b = &s.body;
-        if !b.states.is_empty() || !b.regions.is_empty() || !b.junctions.is_empty() {
+    for (si, &sid) in children.iter().enumerate() {
+        let s = &chart.states[sid as usize];
+        if s.kind != NodeKind::Simple {
             cx.err(
                 "E0708",
                 "states of plant and requirement charts have no children",
-                s.name.span,
+                s.span,
             );
         }
-        if !(b.entry.is_empty() && b.during.is_empty() && b.exit.is_empty()) {
+        if !(s.entry.is_empty() && s.during.is_empty() && s.exit.is_empty()) {
             cx.err(
                 "E0708",
                 "states of plant and requirement charts have no actions",
-                s.name.span,
+                s.span,
             );
         }
-        for t in &b.transitions {
-            let ev = match &t.trigger {
-                Some(Trigger::Event(e)) => match cx.event_ids.get(&e.name) {
-                    Some((id, _)) if alphabet.binary_search(id).is_ok() => Some(*id),
-                    _ => {
-                        cx.err(
-                            "E0710",
-                            format!("`{}` is not an event of this chart", e.name),
-                            e.span,
-                        );
-                        None
+        for &tid in &s.transitions {
+            let t = &chart.transitions[tid as usize];
+            let ev = match t.trigger {
+                Trigger::Event(v) => {
+                    let var = &chart.vars[v as usize];
+                    match cx.event_ids.get(&var.name) {
+                        Some((id, _)) if var.control.is_some() && alphabet.contains(id) => {
+                            Some(*id)
+                        }
+                        _ => {
+                            cx.err(
+                                "E0710",
+                                format!("`{}` is not an event of this chart", var.name),
+                                t.span,
+                            );
+                            None
+                        }
                     }
-                },
-                _ => {
+                }
+                Trigger::None | Trigger::After(_) => {
                     cx.err("E0710", "a transition here is `on EVENT -> STATE;`", t.span);
                     None
                 }
             };
-            if t.guard.is_some() || t.action.is_some() || t.priority.is_some() {
+            if t.guard.is_some() || !t.action.is_empty() || t.priority.is_some() {
                 cx.err(
                     "E0710",
                     "a transition here has no guard, action or priority",
                     t.span,
                 );
             }
-            let target = match &t.target {
-                Some(ast::Target::Path(p)) if p.segments.len() == 1 => {
-                    let n = &p.segments[0].name;
-                    match index.get(n.name.as_str()) {
-                        Some(i) => Some(*i),
-                        None => {
-                            cx.err("E0709", format!("no state `{}`", n.name), n.span);
-                            None
-                        }
+            let target = match &t.dest {
+                Dest::Internal => Some(si as u32),
+                Dest::State(d) => match loc_of(*d) {
+                    Some(l) => Some(l),
+                    None => {
+                        cx.err("E0710", "the target is a sibling state's name", t.span);
+                        None
                     }
-                }
-                None => Some(si as u32),
-                _ => {
+                },
+                Dest::Choice(_) => {
                     cx.err("E0710", "the target is a sibling state's name", t.span);
                     None
                 }
@@ -332,19 +326,19 @@ fn automaton(
             }
         }
     }
-    if locs.is_empty() {
-        cx.err("E0709", "the chart has no states", chart.name.span);
-    }
     if cx.diags.len() > before {
         return None;
     }
-    let mut marked: Vec<bool> = body.states.iter().map(|s| s.marked).collect();
+    let mut marked: Vec<bool> = children
+        .iter()
+        .map(|&c| chart.states[c as usize].marked)
+        .collect();
     if !marked.iter().any(|m| *m) {
         marked.iter_mut().for_each(|m| *m = true);
     }
     Some(Automaton {
-        name: inst.name.name.clone(),
-        chart: chart.name.name.clone(),
+        name: name.to_string(),
+        chart: chart.name.clone(),
         kind,
         locs,
         marked,
@@ -355,50 +349,60 @@ fn automaton(
     })
 }
 
-fn pred(cx: &mut Ctx, automata: &[Automaton], e: &Expr) -> Option<Pred> {
-    use ast::{BinOp, UnOp};
-    Some(match e {
-        Expr::Bool(b, _) => Pred::Const(*b),
-        Expr::In(path, span) => {
-            let names: Vec<&str> = path.segments.iter().map(|s| s.name.name.as_str()).collect();
-            let found = match names.as_slice() {
-                [inst, state] => automata.iter().enumerate().find_map(|(ai, a)| {
-                    (a.name == *inst)
-                        .then(|| a.locs.iter().position(|l| l == state))
-                        .flatten()
-                        .map(|l| Pred::At(ai as u32, l as u32))
-                }),
-                _ => None,
-            };
-            match found {
-                Some(p) => p,
-                None => {
-                    cx.err(
-                        "E0712",
-                        "expected `in(instance.State)` naming an automaton's state",
-                        *span,
-                    );
-                    return None;
-                }
+/// What a state requirement's `in(instance.State)` can name.
+struct States<'a> {
+    model: &'a Model,
+    system: &'a System,
+    /// Flat instance index to automaton index.
+    of_instance: &'a HashMap<u32, u32>,
+}
+
+impl States<'_> {
+    /// The automaton and location of a state of an instance, if it is a location.
+    fn location(&self, instance: u32, state: u32) -> Option<Pred> {
+        let a = *self.of_instance.get(&instance)?;
+        let inst = self.system.instances.get(instance as usize)?;
+        let chart = self.model.charts.get(inst.chart as usize)?;
+        let NodeKind::Or { children, .. } = &chart.states.first()?.kind else {
+            return None;
+        };
+        let l = children.iter().position(|&c| c == state)?;
+        Some(Pred::At(a, l as u32))
+    }
+}
+
+fn pred(cx: &mut Ctx, states: &States<'_>, e: &Expr) -> Option<Pred> {
+    let unsupported = |cx: &mut Ctx| {
+        cx.err(
+            "E0712",
+            "state requirements use `in(instance.State)`, `!`, `&&`, `||`, `true` and `false`",
+            e.span,
+        );
+        None
+    };
+    Some(match &e.kind {
+        ExprKind::Const(v) if e.ty == Type::Bool => Pred::Const(*v != 0),
+        ExprKind::In(r) => match r.instance.and_then(|i| states.location(i, r.state)) {
+            Some(p) => p,
+            None => {
+                cx.err(
+                    "E0712",
+                    "expected `in(instance.State)` naming an automaton's state",
+                    e.span,
+                );
+                return None;
             }
-        }
-        Expr::Unary(UnOp::Not, x, _) => Pred::Not(Box::new(pred(cx, automata, x)?)),
-        Expr::Binary(op @ (BinOp::And | BinOp::Or), a, b, _) => {
-            let a = Box::new(pred(cx, automata, a)?);
-            let b = Box::new(pred(cx, automata, b)?);
+        },
+        ExprKind::Unary(UnOp::Not, x) => Pred::Not(Box::new(pred(cx, states, x)?)),
+        ExprKind::Binary(op @ (BinOp::And | BinOp::Or), a, b) => {
+            let a = Box::new(pred(cx, states, a)?);
+            let b = Box::new(pred(cx, states, b)?);
             if *op == BinOp::And {
                 Pred::And(a, b)
             } else {
                 Pred::Or(a, b)
             }
         }
-        other => {
-            cx.err(
-                "E0712",
-                "state requirements use `in(instance.State)`, `!`, `&&`, `||`, `true` and `false`",
-                other.span(),
-            );
-            return None;
-        }
+        _ => return unsupported(cx),
     })
 }

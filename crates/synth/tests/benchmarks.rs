@@ -8,10 +8,10 @@ use statecheck_synth::{check, emit, extract, families, synthesize, Engine, Outco
 fn problem_of(text: &str, system: Option<&str>) -> Problem {
     let (file, diags) = statecheck_syntax::parse(text);
     assert!(diags.is_empty(), "{diags:?}");
-    let (_, diags) = statecheck_model::check(&file);
+    let (model, diags) = statecheck_model::check(&file);
     assert!(!diags.iter().any(|d| d.is_error()), "{diags:?}");
-    let sys = extract::find_system(&file, system).expect("system");
-    extract::extract(&file, sys).expect("extract")
+    let sys = extract::find_system(&model, system).expect("system");
+    extract::extract(&model, sys).expect("extract")
 }
 
 fn example(name: &str) -> String {

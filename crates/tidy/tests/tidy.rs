@@ -41,10 +41,6 @@ const CHECKERS: [&str; 3] = [
     "statecheck-synth",
 ];
 
-/// Consumers of the IR that still read the syntax tree: synthesis extracts plant and
-/// requirement charts from the AST until it consumes the checked model (issue 14, item 5).
-const READS_THE_AST: [&str; 1] = ["statecheck-synth"];
-
 /// Crates for the edges only (argument parsing, error reporting, serialisation, rendering).
 const EDGE_ONLY: [&str; 4] = ["clap", "anyhow", "ariadne", "serde"];
 
@@ -128,10 +124,7 @@ fn crates_depend_only_on_lower_layers() {
                 }
             }
         }
-        if own == 4
-            && m.deps.iter().any(|d| d == "statecheck-syntax")
-            && !READS_THE_AST.contains(&m.name.as_str())
-        {
+        if own == 4 && m.deps.iter().any(|d| d == "statecheck-syntax") {
             errors.push(format!(
                 "{}: consumers of the IR do not depend on the parser (use the IR's re-exports)",
                 m.name

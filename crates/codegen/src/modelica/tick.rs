@@ -5,7 +5,7 @@
 use super::expr::Emit;
 use super::names::Ty;
 use super::text::{int_lit, string_lit, strip};
-use statecheck_ir::{Node, PropertyKind};
+use statecheck_ir::{Goal, Node};
 
 /// The body of the `when` clause: input checks, assumptions, the step, the levels' state
 /// variables, the properties.
@@ -84,29 +84,25 @@ fn properties(em: &mut Emit<'_>) {
             prop.name,
             em.src.at(prop.span)
         ));
-        match &prop.kind {
-            PropertyKind::Invariant { expr, assuming } => {
-                let opened = match assuming {
+        match prop.goal {
+            Goal::Always { when, holds } => {
+                let opened = match when {
                     Some(a) => {
-                        let c = em.expr_as(*a, Ty::Bool);
+                        let c = em.expr_as(a, Ty::Bool);
                         em.line(&format!("if {} then", strip(&c)));
                         em.depth += 1;
                         true
                     }
                     None => false,
                 };
-                let c = em.expr_as(*expr, Ty::Bool);
+                let c = em.expr_as(holds, Ty::Bool);
                 em.line(&format!("assert({}, {msg});", strip(&c)));
                 if opened {
                     em.depth -= 1;
                     em.line("end if;");
                 }
             }
-            PropertyKind::Respond { ok, .. } | PropertyKind::Observer { ok, .. } => {
-                let c = em.expr_as(*ok, Ty::Bool);
-                em.line(&format!("assert({}, {msg});", strip(&c)));
-            }
-            PropertyKind::Reachable { .. } => {
+            Goal::Reach { .. } => {
                 em.line(&format!(
                     "// reachable `{}`: a question for `statecheck verify`, not asserted",
                     prop.name

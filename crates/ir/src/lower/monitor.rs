@@ -87,6 +87,7 @@ impl Lowerer<'_> {
             };
             out.push(Property {
                 name: prop.name.clone(),
+                goal: goal_of(&kind),
                 kind,
                 span: prop.span,
             });
@@ -101,12 +102,30 @@ impl Lowerer<'_> {
             };
             let active = self.lay.instances[i as usize].active[err as usize];
             let ok = self.node(Node::Unary(UnOp::Not, active));
+            let kind = PropertyKind::Observer { instance: i, ok };
             out.push(Property {
                 name: chart.name.clone(),
-                kind: PropertyKind::Observer { instance: i, ok },
+                goal: goal_of(&kind),
+                kind,
                 span: chart.span,
             });
         }
         out
+    }
+}
+
+/// What a property asks of every state after a tick: the one place that says what each kind
+/// of property means to its consumers.
+fn goal_of(kind: &PropertyKind) -> Goal {
+    match *kind {
+        PropertyKind::Invariant { expr, assuming } => Goal::Always {
+            when: assuming,
+            holds: expr,
+        },
+        PropertyKind::Reachable { expr } => Goal::Reach { target: expr },
+        PropertyKind::Respond { ok, .. } | PropertyKind::Observer { ok, .. } => Goal::Always {
+            when: None,
+            holds: ok,
+        },
     }
 }

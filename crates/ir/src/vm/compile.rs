@@ -211,14 +211,7 @@ fn roots(p: &Program) -> Vec<ExprId> {
         }
     }
     for prop in &p.properties {
-        match &prop.kind {
-            PropertyKind::Invariant { expr, assuming } => {
-                roots.push(*expr);
-                roots.extend(assuming);
-            }
-            PropertyKind::Reachable { expr } => roots.push(*expr),
-            PropertyKind::Respond { ok, .. } | PropertyKind::Observer { ok, .. } => roots.push(*ok),
-        }
+        roots.extend(prop.goal.exprs());
     }
     for inst in &p.instances {
         roots.extend(inst.active.iter().copied());

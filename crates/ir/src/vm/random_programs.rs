@@ -343,13 +343,20 @@ fn random_program(seed: u64) -> Program {
         .collect();
     let step = g.block(3, None);
     let properties = (0..3)
-        .map(|k| Property {
-            name: format!("prop{k}"),
-            kind: PropertyKind::Invariant {
-                expr: g.expr(3),
-                assuming: None,
-            },
-            span: Span::default(),
+        .map(|k| {
+            let expr = g.expr(3);
+            Property {
+                name: format!("prop{k}"),
+                kind: PropertyKind::Invariant {
+                    expr,
+                    assuming: None,
+                },
+                goal: Goal::Always {
+                    when: None,
+                    holds: expr,
+                },
+                span: Span::default(),
+            }
         })
         .collect();
     let sites = (0..g.n_sites)

@@ -223,16 +223,7 @@ fn load_and_prepared_expressions_agree_with_the_plain_calls() {
         }
     }
     for prop in &p.properties {
-        match &prop.kind {
-            crate::PropertyKind::Invariant { expr, assuming } => {
-                exprs.push(*expr);
-                exprs.extend(assuming);
-            }
-            crate::PropertyKind::Reachable { expr } => exprs.push(*expr),
-            crate::PropertyKind::Respond { ok, .. } | crate::PropertyKind::Observer { ok, .. } => {
-                exprs.push(*ok)
-            }
-        }
+        exprs.extend(prop.goal.exprs());
     }
     let prepared: Vec<_> = exprs.iter().map(|&e| p.prepare(e)).collect();
     let mut walk = crate::Machine::new(&p);

@@ -126,6 +126,7 @@ pub(crate) fn skeleton<'a>(
             is_event: v.is_event,
             ty,
             init: default,
+            control: v.control,
             span: v.name.span,
         });
     }
@@ -188,6 +189,7 @@ pub(super) fn build_node<'a>(
         exit: Vec::new(),
         initial_action: Vec::new(),
         transitions: Vec::new(),
+        marked: false,
         span,
     });
     bodies.push(body);
@@ -309,6 +311,7 @@ pub(super) fn build_node<'a>(
                 false,
                 s.name.span,
             );
+            chart.states[sid as usize].marked = s.marked;
             children.push(sid);
         }
         let initial = match body.initial.as_slice() {

@@ -22,7 +22,7 @@ mod expr;
 
 use crate::aig::{Aig, Lit};
 use crate::bv::{self, Bv};
-use statecheck_ir::{Program, PropertyKind, Stmt};
+use statecheck_ir::{Goal, Program, Stmt};
 
 pub use expr::{BAD_SHIFT, DIV_ZERO, RANGE};
 
@@ -172,16 +172,13 @@ pub fn blast(p: &Program) -> Blasted {
     let no_err = b.ok;
     let mut props = Vec::new();
     for prop in &p.properties {
-        let (raw, reachable) = match &prop.kind {
-            PropertyKind::Invariant { expr, assuming } => {
-                let a = assuming.map_or(Lit::TRUE, |a| b.holds(a));
-                let e = b.holds(*expr);
+        let (raw, reachable) = match prop.goal {
+            Goal::Always { when, holds } => {
+                let a = when.map_or(Lit::TRUE, |a| b.holds(a));
+                let e = b.holds(holds);
                 (b.g.and(a, !e), false)
             }
-            PropertyKind::Reachable { expr } => (b.holds(*expr), true),
-            PropertyKind::Respond { ok, .. } | PropertyKind::Observer { ok, .. } => {
-                (!b.holds(*ok), false)
-            }
+            Goal::Reach { target } => (b.holds(target), true),
         };
         let bad = b.g.and(raw, no_err);
         props.push(PropSignal {
