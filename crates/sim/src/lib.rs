@@ -6,6 +6,7 @@
 
 pub mod guided;
 pub mod lasso;
+pub mod minimise;
 pub mod random;
 pub mod run;
 pub mod scenario;
