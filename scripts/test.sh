@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # The test command: installs the system tools the cross-check tests use (gcc for generated C,
-# spin for Promela, berkeley-abc for AIGER, chromium for the studio's browser tests) and the
+# spin for Promela, berkeley-abc for AIGER, chromium for the studio's browser tests, graphviz
+# for `dot --svg`) and the
 # studio's end-to-end driver (playwright-core, npm, pinned in crates/studio/e2e/package.json),
 # then runs the whole test suite in release mode.
 set -euo pipefail
@@ -10,6 +11,7 @@ command -v gcc >/dev/null || need+=(gcc)
 command -v spin >/dev/null || need+=(spin)
 command -v berkeley-abc >/dev/null || need+=(berkeley-abc)
 command -v chromium >/dev/null || need+=(chromium)
+command -v dot >/dev/null || need+=(graphviz)
 if [ ${#need[@]} -gt 0 ]; then
   SUDO=""
   [ "$(id -u)" -ne 0 ] && SUDO="sudo"

@@ -33,7 +33,8 @@ const fn code(
 }
 
 /// Every code: errors of the parser (E00xx) and of the checker (E01xx), warnings of the
-/// checker (W02xx) and of the design-rule lints (W03xx), errors of synthesis (E07xx).
+/// checker (W02xx) and of the design-rule lints (W03xx), errors of synthesis (E07xx), of
+/// scenario files (E08xx) and of external tools (E09xx).
 pub const CODES: &[CodeInfo] = &[
     code("E0001", "unexpected character", "A character that cannot start a token (such as `@`, `$`, a `#` comment or a quoted string from another language) was skipped. Comments are `// …` or `/* … */`; the language has no strings.", "grammar.md"),
     code("E0002", "unterminated block comment", "A `/*` comment is never closed and runs to the end of the file. Close it with `*/`; block comments do not nest.", "grammar.md"),
@@ -56,9 +57,9 @@ pub const CODES: &[CodeInfo] = &[
     code("E0030", "malformed CTL until", "A CTL until is written `A[p U q]` or `E[p U q]`; the `U` is missing.", "properties.md"),
     code("E0101", "unknown name", "A name (variable, event, constant, enum literal, type, function, state, chart, instance) is not declared where it is used. The hint suggests a similar declared name when there is one.", "language.md"),
     code("E0102", "declared twice", "Two declarations of the same kind share a name in one scope (charts, systems, variables, properties, …).", "language.md"),
-    code("E0103", "type mismatch", "An expression has the wrong type for its place: a condition that is not `bool`, an `int` given to a `bool`, an enum literal of another enum, an event used as a value, a connection between ports of different types.", "language.md"),
-    code("E0104", "value out of range", "A constant value lies outside the range of its type or of what the construct accepts (an initial value outside `int[lo..hi]`, an empty range, a `within` bound, a non-positive tick length).", "language.md"),
-    code("E0105", "not a constant", "A place that needs a value known before the run (a constant, a type bound, an instance count, a delay) was given an expression that reads variables, or constants depend on each other in a cycle.", "language.md"),
+    code("E0103", "type mismatch", "An expression has the wrong type for its place: a condition that is not `bool`, an `int` given to a `bool`, an enum literal of another enum, an event used as a value, a connection between ports of different types, a chart argument of the wrong type.", "language.md"),
+    code("E0104", "value out of range", "A constant value lies outside the range of its type or of what the construct accepts (an initial value outside `int[lo..hi]`, an empty range, a `within` bound, a non-positive tick length, a chart argument outside its parameter's range).", "language.md"),
+    code("E0105", "not a constant", "A place that needs a value known before the run (a constant, a type bound, an instance count, a delay, a chart argument) was given an expression that reads variables, or constants depend on each other in a cycle.", "language.md"),
     code("E0106", "missing `initial`", "A chart or state with child states must say which child is entered first: `initial NAME;`.", "language.md"),
     code("E0107", "bad `initial`", "`initial` does not name a child state of this state, or a parallel state (whose regions all start) declares one.", "language.md"),
     code("E0108", "duplicate at one level", "Two states, regions or junctions of one parent share a name, or an element that may appear once (such as `tick`, `initial`, `history`) appears twice.", "language.md"),
@@ -82,11 +83,19 @@ pub const CODES: &[CodeInfo] = &[
     code("E0141", "import cycle", "A file imports itself, directly or through other files; the diagnostic shows the chain.", "components.md"),
     code("E0142", "imported name not declared", "A name in an import list is not a chart or system of the imported file.", "components.md"),
     code("E0143", "file imported twice", "One file imports the same file twice; one import is enough.", "components.md"),
+    code("E0150", "bad chart argument", "An instance gives an argument that its chart does not take: more positional arguments than the chart has parameters, a named argument that is not a parameter, a parameter given twice, or arguments to a chart without parameters. Arguments are `Chart(1, 2)` in parameter order, or `Chart(hi = 2)` by name.", "components.md"),
+    code("E0151", "missing chart argument", "An instance of a parameterised chart gives no value for a parameter that has no default. Give it positionally or by name (`instance s: Sensor(lo = 0, hi = 5);`), or give the parameter a default in the chart (`hi: int = 5`).", "components.md"),
+    code("E0152", "interface port missing", "A chart declared `implements I` but does not declare one of `I`'s ports. Declare it in the chart with the interface's direction, kind and type.", "components.md"),
+    code("E0153", "interface port of another kind", "A chart declares a port of an interface it implements with another direction (input/output) or kind (event/variable) than the interface.", "components.md"),
+    code("E0154", "interface port of another type", "A chart declares a port of an interface it implements with an incompatible type: `bool` and enums must be the same; an input's integer range must contain the interface's range (the chart accepts everything others may send), an output's range must lie within it (the chart sends only what the interface promises).", "components.md"),
+    code("E0155", "not a port of the slot's interface", "A connection to a slot (an instance declared by an interface) names a port the interface does not declare, or uses an input as a source or an output as a destination. Connections to a slot are checked against its interface, so that every chart a configuration may choose fits.", "components.md"),
+    code("E0156", "chart not allowed in this configuration", "A configuration binds a slot to a chart that does not declare `implements` the slot's interface, or binds an instance declared with a chart to another chart (a configuration may change only its arguments; declare the instance by an interface to swap charts).", "components.md"),
+    code("E0157", "slot without a chart", "A slot (an instance declared by an interface) needs a chart from every configuration of its system; a system with slots needs at least one `configuration`.", "components.md"),
     code("E0160", "CTL operator in an LTL formula", "`ltl` formulas use the temporal operators `G F X U R W` without path quantifiers; `A`/`E` belong to `ctl` formulas.", "properties.md"),
     code("E0161", "LTL operator in a CTL formula", "In a `ctl` formula every temporal operator needs a path quantifier: `AG`, `EF`, `A[p U q]`, ….", "properties.md"),
     code("E0131", "transition leaves the chart's top level", "The lowering refuses a transition whose source and target lie in different top-level regions, or that would leave the chart.", "semantics.md"),
     code("W0201", "no initial value", "A variable without `= value` starts at its type's default (the lowest value, `false`, the first literal); say it explicitly.", "lints.md"),
-    code("W0202", "instance connected to itself", "The input reads the instance's own output as of the previous tick.", "lints.md"),
+    code("W0202", "instance connected to itself", "The input reads the instance's own output slot: a value the instance wrote earlier in the same step (an earlier region, an entry or transition action) is seen in that tick; otherwise the previous tick's value. Usually a mistake; a `local` variable says the same more clearly (`tests/semantics/self_connect`).", "lints.md"),
     code("W0301", "state with no incoming transition", "No transition enters the state and it is not its parent's `initial`: it can never be active.", "lints.md"),
     code("W0302", "state isolated from its level's initial state", "The state cannot be reached from the `initial` state of its level.", "lints.md"),
     code("W0303", "two transitions with the same `priority`", "Two transitions of one state have the same explicit priority; their order is then textual, which the priority was meant to override.", "lints.md"),
@@ -119,6 +128,8 @@ pub const CODES: &[CodeInfo] = &[
     code("E0808", "scenario: value of the wrong type", "A `bool` takes `true` or `false` (not `1` or `0`), an enum one of its literals, an integer a decimal, hex or binary literal.", "language.md"),
     code("E0810", "scenario: misplaced `loop:`", "A scenario has at most one `loop:` line; it follows the first tick and precedes at least one tick (tick 0 only initialises).", "language.md"),
     code("E0809", "scenario: too long", "The scenario would expand (with its `* N` repeats) to more ticks than a run may have.", "language.md"),
+    code("E0901", "Graphviz not found", "`statecheck dot --svg` runs Graphviz's `dot -Tsvg`, which is not installed or not on `PATH` (install the `graphviz` package, or drop `--svg` to write DOT text). Exit code 2.", "tools.md"),
+    code("E0902", "Graphviz failed", "Graphviz's `dot -Tsvg` exited with an error on the drawing; its message is shown. Exit code 2.", "tools.md"),
 ];
 
 /// The entry of a code (case-insensitive), if any.

@@ -17,6 +17,9 @@ pub struct GenArgs {
     /// The system (or chart) to generate.
     #[arg(long)]
     system: Option<String>,
+    /// The system's configuration (`configuration NAME { … }`, docs/components.md).
+    #[arg(long, value_name = "NAME")]
+    config: Option<String>,
     /// Output directory (c, rust) or file (modelica; standard output when absent).
     #[arg(short, long)]
     output: Option<String>,
@@ -33,7 +36,7 @@ pub struct GenArgs {
 /// Run the command; returns the exit code.
 pub fn run(a: GenArgs) -> Result<u8> {
     let loaded = load::load(&a.model, false)?;
-    let sys = loaded.system(a.system.as_deref())?;
+    let sys = loaded.system_in(a.system.as_deref(), a.config.as_deref())?;
     let program = loaded.lower(sys)?;
     let src = Source::new(&loaded.path, &loaded.source);
     let prefix = statecheck_codegen::common::ident(&program.name).to_lowercase();

@@ -107,6 +107,9 @@ pub struct Loaded {
     pub source: String,
     /// The files of the program, to name the file of a span.
     pub sources: Sources,
+    /// The merged syntax tree the model was checked from (`dot` labels transitions with
+    /// their text as written).
+    pub file: statecheck_syntax::ast::File,
     /// The checked model.
     pub model: Model,
     /// All diagnostics (errors, warnings).
@@ -190,12 +193,50 @@ pub fn load(path: &str, show_warnings: bool) -> Result<Loaded> {
         path: path.to_string(),
         source,
         sources,
+        file,
         model,
         diags,
     })
 }
 
 impl Loaded {
+    /// The configurations the system `base` declares, in order: the model holds one system
+    /// `base:NAME` per configuration (`statecheck_model::components`, docs/components.md).
+    pub fn configurations(&self, base: &str) -> Vec<String> {
+        let prefix = format!("{base}{}", statecheck_model::components::CONFIG_SEP);
+        self.model
+            .systems
+            .iter()
+            .filter_map(|s| s.name.strip_prefix(&prefix).map(str::to_string))
+            .collect()
+    }
+
+    /// [`Loaded::system`], then, with `config`, that system in that configuration (a usage
+    /// error when it has no such configuration).
+    pub fn system_in(
+        &self,
+        name: Option<&str>,
+        config: Option<&str>,
+    ) -> Result<&statecheck_model::System> {
+        let sys = self.system(name)?;
+        let Some(config) = config else {
+            return Ok(sys);
+        };
+        let base = sys.name.as_str();
+        let all = self.configurations(base);
+        if all.is_empty() {
+            bail!("system `{base}` declares no configurations");
+        }
+        if !all.iter().any(|c| c == config) {
+            bail!(
+                "system `{base}` has no configuration `{config}`; it has: {}",
+                all.join(", ")
+            );
+        }
+        let sep = statecheck_model::components::CONFIG_SEP;
+        self.system(Some(&format!("{base}{sep}{config}")))
+    }
+
     /// Choose the system: by name, else the only explicit one, else the only chart.
     pub fn system(&self, name: Option<&str>) -> Result<&statecheck_model::System> {
         let systems = &self.model.systems;
@@ -213,7 +254,12 @@ impl Loaded {
                 ),
             };
         }
-        let explicit: Vec<_> = systems.iter().filter(|s| !s.implicit).collect();
+        // A system's configurations (`Plant:faulty`) are chosen with --config, not counted.
+        let sep = statecheck_model::components::CONFIG_SEP;
+        let explicit: Vec<_> = systems
+            .iter()
+            .filter(|s| !s.implicit && !s.name.contains(sep))
+            .collect();
         match explicit.as_slice() {
             [one] => return Ok(one),
             [] => {}

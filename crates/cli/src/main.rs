@@ -98,6 +98,10 @@ enum Command {
         /// Write to this file instead of standard output.
         #[arg(short, long)]
         output: Option<String>,
+        /// Write SVG instead of DOT, drawn by Graphviz's `dot -Tsvg` (Graphviz must be
+        /// installed: a missing `dot` is error E0160, exit 2).
+        #[arg(long)]
+        svg: bool,
     },
 }
 
@@ -171,6 +175,7 @@ fn run(cli: Cli) -> Result<u8> {
             system,
             coverage,
             output,
+            svg,
         } => {
             let loaded = load::load(&model, false)?;
             let sys = loaded.system(system.as_deref())?;
@@ -189,8 +194,14 @@ fn run(cli: Cli) -> Result<u8> {
                 }
                 None => None,
             };
-            let dot = output::dot::render(&loaded.model, &program, counts.as_deref());
-            write_out(output.as_deref(), &dot)?;
+            let written = output::dot_text::Written::new(&loaded.source, &loaded.file);
+            let dot = output::dot::render(&loaded.model, &program, &written, counts.as_deref());
+            if svg {
+                let svg = output::svg::from_dot(&dot)?;
+                write_out(output.as_deref(), &svg)?;
+            } else {
+                write_out(output.as_deref(), &dot)?;
+            }
             Ok(0)
         }
     }

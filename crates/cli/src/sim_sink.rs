@@ -68,8 +68,11 @@ impl<'a> SimSink<'a> {
         let mut s = SimSink {
             p,
             views,
-            table: matches!(format, Format::Table)
-                .then(|| output::table::Stream::new(p, views, output::table::SIZING_ROWS)),
+            table: matches!(format, Format::Table).then(|| {
+                let mut t = output::table::Stream::new(p, views, output::table::SIZING_ROWS);
+                t.width = output::table::terminal_width();
+                t
+            }),
             format,
             stdout: BufWriter::with_capacity(1 << 16, std::io::stdout()),
             stdout_closed: false,

@@ -9,6 +9,7 @@
 
 mod cex;
 mod live;
+mod matrix;
 mod report;
 mod symbolic;
 mod watch;
@@ -40,6 +41,13 @@ pub struct VerifyArgs {
     /// The system (or chart) to verify.
     #[arg(long)]
     system: Option<String>,
+    /// Verify the system in this configuration (`configuration NAME { … }`, docs/components.md).
+    #[arg(long, value_name = "NAME", conflicts_with = "all_configs")]
+    config: Option<String>,
+    /// Verify the system in every configuration it declares and print a matrix of
+    /// configurations × properties (with `--json`: one JSON object).
+    #[arg(long, conflicts_with_all = ["cex_dir", "json_lines", "certificate", "check_certificate"])]
+    all_configs: bool,
     /// Check only this property (repeatable; built-ins may be named too).
     #[arg(long = "property", value_name = "NAME")]
     properties: Vec<String>,
@@ -82,6 +90,10 @@ pub struct VerifyArgs {
     /// Print only the verdict table (no statistics, counterexample tables or progress).
     #[arg(long, short)]
     quiet: bool,
+    /// Show only these variables and events in counterexample tables: globs over
+    /// `instance.name` (`*` any characters, `?` one), comma-separated or repeated.
+    #[arg(long, value_name = "PATTERN")]
+    show: Vec<String>,
     /// Write each counterexample or witness as a scenario file `DIR/PROPERTY.scn`.
     #[arg(long, value_name = "DIR")]
     cex_dir: Option<String>,
@@ -149,8 +161,26 @@ pub fn run(a: VerifyArgs) -> Result<u8> {
         });
     }
     let loaded = load::load(&a.model, false)?;
-    let sys = loaded.system(a.system.as_deref())?;
+    let sys = loaded.system_in(a.system.as_deref(), a.config.as_deref())?;
+    if a.all_configs {
+        let base = sys.name.clone();
+        let check = options(&a, max_memory, timeout);
+        let cancel = statecheck_verify::Cancel::new();
+        watch::on_interrupt(&cancel);
+        let _memory = max_memory.map(|m| watch::memory(&cancel, m));
+        let vopts = statecheck_verify::Options {
+            engine: a.engine.into(),
+            check,
+            property_timeout,
+            cancel: Some(cancel),
+        };
+        return matrix::run(&loaded, &base, &vopts, a.json);
+    }
     let program = loaded.lower(sys)?;
+    crate::output::table::show(
+        &mut statecheck_ir::view::TraceView::new(&loaded.model, &program),
+        &a.show,
+    )?;
     if let Some(cf) = &a.check_certificate {
         let (aig, name) = symbolic::model_problem(&program, &a.properties)?;
         return symbolic::check_certificate(&aig, &name, cf);
@@ -158,26 +188,13 @@ pub fn run(a: VerifyArgs) -> Result<u8> {
     if a.certificate.is_some() && a.engine != symbolic::EngineArg::Ic3 {
         bail!("--certificate needs --engine ic3");
     }
-    let opts = Options {
-        properties: a.properties.clone(),
-        depth: a.depth,
-        max_memory,
-        max_states: a.max_states,
-        timeout,
-        threads: a.threads.unwrap_or(0),
-        force: a.force,
-        backend: a.backend.into(),
-        compiler: Some(std::sync::Arc::new(statecheck_native::CCompiler)),
-        ..Options::default()
-    };
+    let opts = options(&a, max_memory, timeout);
     let engine: statecheck_verify::Engine = a.engine.into();
     let explicit = engine == statecheck_verify::Engine::Explicit;
     if explicit {
         report::announce_branching(&program, &opts, a.json || a.json_lines || a.quiet);
     }
-    let names: Vec<String> = statecheck_ir::verdict::select(&program, &a.properties)
-        .map(|v| v.into_iter().map(|p| p.name).collect())
-        .unwrap_or_default();
+    let names: Vec<String> = statecheck_verify::row_names(&program, &a.properties);
     let format = if a.json {
         live::Format::Json
     } else if a.json_lines {
@@ -230,19 +247,35 @@ pub fn run(a: VerifyArgs) -> Result<u8> {
     let cexs = live.counterexamples(&rep.results)?;
     match format {
         live::Format::Json => {
-            let v = report::json(&program, &loaded.source, rep, &cexs, &run.meta);
+            let v = report::json(&program, &loaded.sources, rep, &cexs, &run.meta);
             crate::write_out(None, &format!("{}\n", serde_json::to_string(&v)?))?;
         }
         live::Format::JsonLines => {
-            let v = serde_json::json!({"stats": report::stats_json(&program, &loaded.source, &rep.stats)});
+            let v = serde_json::json!({"stats": report::stats_json(&program, &loaded.sources, &rep.stats)});
             crate::write_out(None, &format!("{v}\n"))?;
         }
         live::Format::Table => {
-            let t = report::tail(&loaded, &program, rep, &cexs, a.quiet, explicit);
+            let t = report::tail(&loaded, &program, rep, &cexs, a.quiet, explicit, &a.show);
             crate::write_out(None, &t)?;
         }
     }
     Ok(exit_code(&rep.results))
+}
+
+/// The engines' options from the flags.
+fn options(a: &VerifyArgs, max_memory: Option<u64>, timeout: Option<Duration>) -> Options {
+    Options {
+        properties: a.properties.clone(),
+        depth: a.depth,
+        max_memory,
+        max_states: a.max_states,
+        timeout,
+        threads: a.threads.unwrap_or(0),
+        force: a.force,
+        backend: a.backend.into(),
+        compiler: Some(std::sync::Arc::new(statecheck_native::CCompiler)),
+        ..Options::default()
+    }
 }
 
 /// A positive number of seconds.

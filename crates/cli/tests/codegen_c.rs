@@ -1,5 +1,6 @@
 //! Differential test of the generated C on the examples: for every scenario of the FAM, the
-//! linear drive and the semantics models, `statecheck gen c --harness` compiled with
+//! linear drive and the semantics models (one with a parameterised chart, `params`),
+//! `statecheck gen c --harness` compiled with
 //! `gcc -std=c99 -Wall -Wextra -Wpedantic -Werror` prints the same JSON trace (ticks, how the
 //! run ended, reached properties) as `statecheck sim --json`. Everything is compiled in a
 //! fresh temporary directory.
@@ -52,7 +53,7 @@ fn cases() -> Vec<(PathBuf, Option<&'static str>, Vec<PathBuf>)> {
     ];
     let sem = root.join("tests/semantics");
     for name in [
-        "choice", "history", "order", "parallel", "priority", "runtime", "timers",
+        "choice", "history", "order", "parallel", "params", "priority", "runtime", "timers",
     ] {
         out.push((
             sem.join(format!("{name}.sc")),

@@ -2,8 +2,9 @@
 //! driven by playwright-core) against this build of `statecheck`. The script opens the FAM
 //! closed loop, injects a stall, compares the highlighted states and every tick with
 //! `statecheck sim --json` of the scenario the page saves, replays a `verify --cex-dir`
-//! counterexample to its violating tick, steps back and forward, and writes the screenshots
-//! of docs/studio.md to docs/studio/.
+//! counterexample to its violating tick, steps back and forward, replays a lasso of a
+//! temporal property verified from the page and steps around its loop, reloads the page and
+//! finds its session, and writes the screenshots of docs/studio.md to docs/studio/.
 //!
 //! `scripts/test.sh` installs chromium and the npm package; where either is missing (a bare
 //! `cargo test`), this test says so on stderr and checks nothing.

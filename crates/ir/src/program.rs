@@ -283,6 +283,10 @@ pub struct Cover {
     pub label: String,
     /// Where it was written.
     pub span: Span,
+    /// True when the item is meant never to be covered: an observer's `error` state
+    /// (`Chart::is_observer_error`) and a transition whose every target is one. Reports of
+    /// dead design and of coverage leave such items out.
+    pub expected_unreached: bool,
 }
 
 /// Per-instance layout: which slot holds what.
@@ -457,16 +461,45 @@ pub struct Program {
     pub started: SlotId,
     /// Number of expression locals (see [`Node::Let`]).
     pub n_locals: usize,
-    /// The interpreter's compiled form, built on first use.
-    pub(crate) code: std::sync::OnceLock<crate::vm::Code>,
+    /// What the interpreter derives from the program once (its register code, `crate::vm`).
+    pub(crate) run_cache: RunCache,
+}
+
+/// What the interpreter derives from a program once, on first use, and shares between all the
+/// machines that run it (the register code of `crate::vm`). Opaque here, so that the IR's data
+/// does not depend on how it is run; a cloned program starts with an empty cache.
+#[derive(Default)]
+pub(crate) struct RunCache(std::sync::OnceLock<Box<dyn std::any::Any + Send + Sync>>);
+
+impl RunCache {
+    /// The cached value, computed by `init` on first use; `None` if a value of another type
+    /// was cached (one type is ever stored: `vm::Code`).
+    pub(crate) fn get_or_init<T: std::any::Any + Send + Sync>(
+        &self,
+        init: impl FnOnce() -> T,
+    ) -> Option<&T> {
+        self.0.get_or_init(|| Box::new(init())).downcast_ref()
+    }
+}
+
+impl Clone for RunCache {
+    fn clone(&self) -> Self {
+        RunCache::default()
+    }
+}
+
+impl std::fmt::Debug for RunCache {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        let state = if self.0.get().is_some() {
+            "built"
+        } else {
+            "empty"
+        };
+        write!(f, "RunCache({state})")
+    }
 }
 
 impl Program {
-    /// The compiled form the interpreter runs (built once).
-    pub(crate) fn code(&self) -> &crate::vm::Code {
-        self.code.get_or_init(|| crate::vm::Code::compile(self))
-    }
-
     /// The slots of the persistent state.
     pub fn state_slots(&self) -> &[Slot] {
         &self.slots[..self.n_state]

@@ -43,15 +43,35 @@ pub struct VarView {
     pub is_bool: bool,
 }
 
+/// A column of a readable trace (the terminal table, a counterexample table): one slot,
+/// shown once even when a connection makes it the value of several variables.
+#[derive(Clone, Debug)]
+pub struct Column {
+    /// Its heading: the variable, or for a connected signal the connection
+    /// (`a.out->b.in`, fan-out `a.out->b.in,c.in`), named from the writer.
+    pub name: String,
+    /// Every variable name it stands for (what `--show` patterns match).
+    pub names: Vec<String>,
+    /// Index into [`TraceView::vars`] (or [`TraceView::events`] for an event column).
+    pub index: usize,
+}
+
 /// Everything a trace prints of a program.
 #[derive(Clone, Debug)]
 pub struct TraceView {
     /// Instances in declaration order.
     pub instances: Vec<InstanceView>,
-    /// All non-event variables, instance by instance.
+    /// All non-event variables, instance by instance (the JSON, CSV and VCD contract).
     pub vars: Vec<VarView>,
     /// All events: (`instance.event`, slot).
     pub events: Vec<(String, SlotId)>,
+    /// The variables a readable trace shows: each slot once (see [`Column`]), all of them
+    /// unless [`TraceView::select`] chose some.
+    pub var_columns: Vec<Column>,
+    /// The events a readable trace shows, likewise.
+    pub event_columns: Vec<Column>,
+    /// The declared tick length in milliseconds (`tick 100 ms;`), for a time column.
+    pub tick_ms: Option<i64>,
 }
 
 impl TraceView {
@@ -107,11 +127,48 @@ impl TraceView {
                 }
             }
         }
+        let var_names: Vec<(String, SlotId)> =
+            vars.iter().map(|v| (v.name.clone(), v.slot)).collect();
+        let var_columns = columns(model, p, &var_names);
+        let event_columns = columns(model, p, &events);
         TraceView {
             instances,
             vars,
             events,
+            var_columns,
+            event_columns,
+            tick_ms: model.tick_ms,
         }
+    }
+
+    /// Keep only the columns with a variable name matched by one of `patterns` (globs: `*`
+    /// any characters, `?` one; each may list several separated by commas; no pattern keeps
+    /// every column). Returns the patterns that matched nothing.
+    pub fn select(&mut self, patterns: &[String]) -> Vec<String> {
+        let globs: Vec<&str> = patterns
+            .iter()
+            .flat_map(|p| p.split(','))
+            .map(str::trim)
+            .filter(|g| !g.is_empty())
+            .collect();
+        if globs.is_empty() {
+            return Vec::new();
+        }
+        let hit = |c: &Column| globs.iter().any(|g| c.names.iter().any(|n| glob(g, n)));
+        let unmatched = globs
+            .iter()
+            .filter(|g| {
+                !self
+                    .var_columns
+                    .iter()
+                    .chain(&self.event_columns)
+                    .any(|c| c.names.iter().any(|n| glob(g, n)))
+            })
+            .map(|g| g.to_string())
+            .collect();
+        self.var_columns.retain(|c| hit(c));
+        self.event_columns.retain(|c| hit(c));
+        unmatched
     }
 
     /// Active state paths of instance `i` in `slots` (`leaves_only` drops composites).
@@ -145,6 +202,75 @@ impl TraceView {
     }
 }
 
+/// One column per slot among `named` (in the order of their first variable), named from the
+/// variable that owns the slot (the writer of a connection) followed by the others.
+fn columns(model: &Model, p: &Program, named: &[(String, SlotId)]) -> Vec<Column> {
+    let mut out: Vec<Column> = Vec::new();
+    for (k, (name, slot)) in named.iter().enumerate() {
+        if let Some(c) = out.iter_mut().find(|c| named[c.index].1 == *slot) {
+            c.names.push(name.clone());
+            continue;
+        }
+        out.push(Column {
+            name: name.clone(),
+            names: vec![name.clone()],
+            index: k,
+        });
+    }
+    for c in &mut out {
+        if c.names.len() < 2 {
+            continue;
+        }
+        let slot = named[c.index].1;
+        // The owner of the slot is the writer; the others read it through a connection.
+        let owner = match p.slots.get(slot as usize).map(|s| &s.role) {
+            Some(SlotRole::Var { instance, var }) => {
+                p.instances.get(*instance as usize).and_then(|i| {
+                    let chart = model.charts.get(i.chart as usize)?;
+                    let v = chart.vars.get(*var as usize)?;
+                    Some(format!("{}.{}", i.name, v.name))
+                })
+            }
+            _ => None,
+        };
+        let pos = owner
+            .and_then(|o| c.names.iter().position(|n| *n == o))
+            .unwrap_or(0);
+        let mut names = c.names.clone();
+        let writer = names.remove(pos);
+        c.index = named
+            .iter()
+            .position(|(n, _)| *n == writer)
+            .unwrap_or(c.index);
+        c.name = format!("{writer}->{}", names.join(","));
+    }
+    out
+}
+
+/// True when `name` matches the glob `pat` (`*` any run of characters, `?` one character).
+pub fn glob(pat: &str, name: &str) -> bool {
+    let (p, n): (Vec<char>, Vec<char>) = (pat.chars().collect(), name.chars().collect());
+    // Iterative matching with one backtrack point: linear in practice, never recursive.
+    let (mut i, mut j) = (0, 0);
+    let mut star: Option<(usize, usize)> = None;
+    while j < n.len() {
+        if i < p.len() && (p[i] == '?' || p[i] == n[j]) {
+            i += 1;
+            j += 1;
+        } else if i < p.len() && p[i] == '*' {
+            star = Some((i, j));
+            i += 1;
+        } else if let Some((si, sj)) = star {
+            i = si + 1;
+            j = sj + 1;
+            star = Some((si, sj + 1));
+        } else {
+            return false;
+        }
+    }
+    p[i..].iter().all(|c| *c == '*')
+}
+
 /// Names of the values of every slot, where they have names: enum literals, and the child
 /// states of each active-state selector (so generated code can name states in enums).
 pub fn value_names(model: &Model, p: &Program) -> Vec<Option<Vec<String>>> {
@@ -173,4 +299,23 @@ pub fn value_names(model: &Model, p: &Program) -> Vec<Option<Vec<String>>> {
             _ => None,
         })
         .collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::glob;
+
+    #[test]
+    fn globs_match_as_in_a_shell() {
+        assert!(glob("fam.*", "fam.stallNow"));
+        assert!(glob("*.stall*", "fam[1].stallNow"));
+        assert!(glob("a?c", "abc"));
+        assert!(!glob("a?c", "abbc"));
+        assert!(glob("*", ""));
+        assert!(!glob("fam.*", "env.stallNow"));
+        assert!(glob("*a*b", "xaxxab"));
+        assert!(!glob("*a*b", "xaxxa"));
+        assert!(glob("exact", "exact"));
+        assert!(!glob("exact", "exactly"));
+    }
 }

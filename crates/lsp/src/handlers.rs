@@ -38,8 +38,24 @@ has_uri! {
 
 /// Parse and check a text: its diagnostics (syntax first; the checker's too, except the
 /// name errors that may only follow from the syntax errors' recovery, as in the CLI).
-fn check(text: &str) -> Vec<Diagnostic> {
+///
+/// A document that imports files is checked with them (read from disk, `imports.rs`); only the
+/// diagnostics in the document itself are kept.
+fn check(uri: &lt::Uri, text: &str) -> Vec<Diagnostic> {
     let (file, mut diags) = statecheck_syntax::parse(text);
+    if let Some(program) = crate::imports::program(uri, text, &file) {
+        let root_end = program.sources.files.first().map_or(text.len(), |f| f.end);
+        diags = program.diags;
+        let syntax_errors = diags.iter().any(Diagnostic::is_error);
+        let (_, more) = statecheck_model::check(&program.file);
+        diags.extend(
+            more.into_iter()
+                .filter(|d| !syntax_errors || (d.is_error() && d.code != "E0101")),
+        );
+        diags.retain(|d| (d.span.start as usize) < root_end);
+        diags.sort_by_key(|d| (d.span.start, d.span.end));
+        return diags;
+    }
     let syntax_errors = diags.iter().any(Diagnostic::is_error);
     let (_, more) = statecheck_model::check(&file);
     diags.extend(
@@ -72,9 +88,9 @@ fn to_lsp(lines: &Lines<'_>, d: &Diagnostic) -> lt::Diagnostic {
 }
 
 /// The diagnostics of a text, for `textDocument/publishDiagnostics`.
-pub fn diagnostics(text: &str) -> Vec<lt::Diagnostic> {
+pub fn diagnostics(uri: &lt::Uri, text: &str) -> Vec<lt::Diagnostic> {
     let lines = Lines::new(text);
-    check(text).iter().map(|d| to_lsp(&lines, d)).collect()
+    check(uri, text).iter().map(|d| to_lsp(&lines, d)).collect()
 }
 
 fn index(text: &str) -> Index {
@@ -147,7 +163,13 @@ pub fn definition(
     let lines = Lines::new(doc.text);
     let ix = index(doc.text);
     let off = lines.offset(p.text_document_position_params.position) as u32;
-    let (_, sym) = ix.at(off)?;
+    let Some((_, sym)) = ix.at(off) else {
+        // Not declared in this file: an imported chart, system, constant, enum or function.
+        let name = crate::imports::word_at(doc.text, off as usize)?;
+        let (file, _) = statecheck_syntax::parse(doc.text);
+        let loc = crate::imports::definition(doc.uri, doc.text, &file, name)?;
+        return Some(lt::GotoDefinitionResponse::Scalar(loc));
+    };
     let loc = lt::Location::new(doc.uri.clone(), lines.range(ix.symbols[sym].decl));
     Some(lt::GotoDefinitionResponse::Scalar(loc))
 }
@@ -347,7 +369,7 @@ pub fn code_actions(doc: &Doc<'_>, p: lt::CodeActionParams) -> Option<lt::CodeAc
         lines.offset(p.range.end) as u32,
     );
     let mut out = Vec::new();
-    for d in check(doc.text) {
+    for d in check(doc.uri, doc.text) {
         if d.span.end < a || d.span.start > b {
             continue;
         }

@@ -210,13 +210,17 @@ impl Builder {
                         );
                     }
                 }
-                Item::Tick(_) | Item::Import(_) => {}
+                // Interfaces are not navigable yet (docs/components.md).
+                Item::Tick(_) | Item::Import(_) | Item::Interface(_) => {}
             }
         }
     }
 
     fn declare_chart(&mut self, c: &Chart, parent: Option<usize>) {
         let id = self.add(&c.name.name, SymKind::Chart, c.name.span, c.span, parent);
+        for p in &c.params {
+            self.add(&p.name.name, SymKind::Param, p.name.span, p.span, Some(id));
+        }
         for v in &c.vars {
             let kind = if v.is_event {
                 SymKind::Event(v.kind)
@@ -332,7 +336,7 @@ impl Builder {
                     }
                     self.expr(&c.value, &Ctx::default());
                 }
-                Item::Enum(_) | Item::Tick(_) | Item::Import(_) => {}
+                Item::Enum(_) | Item::Tick(_) | Item::Import(_) | Item::Interface(_) => {}
                 Item::Fn(f) => {
                     let id = self.global(&f.name.name, |k| k == SymKind::Fn);
                     let cx = Ctx {

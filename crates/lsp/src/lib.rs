@@ -13,6 +13,7 @@
 
 mod convert;
 mod handlers;
+mod imports;
 pub mod index;
 
 use lsp_server::{Connection, Message, Notification, Request, Response};
@@ -156,7 +157,7 @@ fn publish(
     };
     let params = PublishDiagnosticsParams {
         uri: uri.clone(),
-        diagnostics: handlers::diagnostics(text),
+        diagnostics: handlers::diagnostics(uri, text),
         version: None,
     };
     let n = Notification::new(PublishDiagnostics::METHOD.to_string(), params);

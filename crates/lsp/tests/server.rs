@@ -98,16 +98,31 @@ impl Client {
     }
 
     fn open(&mut self, text: &str) -> Value {
+        self.open_uri(URI, text)
+    }
+
+    fn open_uri(&mut self, uri: &str, text: &str) -> Value {
         self.notify(
             "textDocument/didOpen",
-            json!({ "textDocument": { "uri": URI, "languageId": "statecheck", "version": 1, "text": text } }),
+            json!({ "textDocument": { "uri": uri, "languageId": "statecheck", "version": 1, "text": text } }),
         );
         self.next_diagnostics()
     }
 
     fn at(&mut self, method: &str, line: u32, character: u32, extra: Value) -> Value {
+        self.at_uri(URI, method, line, character, extra)
+    }
+
+    fn at_uri(
+        &mut self,
+        uri: &str,
+        method: &str,
+        line: u32,
+        character: u32,
+        extra: Value,
+    ) -> Value {
         let mut params = json!({
-            "textDocument": { "uri": URI },
+            "textDocument": { "uri": uri },
             "position": { "line": line, "character": character }
         });
         if let (Some(p), Some(e)) = (params.as_object_mut(), extra.as_object()) {
@@ -194,6 +209,29 @@ fn go_to_definition() {
     // `On` in `-> On` (line 4) at line 5, 8..10.
     let d = c.at("textDocument/definition", 4, 27, json!({}));
     assert_eq!(d["range"], range(5, 8, 5, 10));
+}
+
+/// A document that imports a chart: no "unknown chart" diagnostic, and go-to-definition on
+/// the imported name opens the library file (tests/components/dead_imported.sc imports
+/// lib/latch.sc, whose line 1 is `chart Latch {`: `Latch` at 6..11).
+#[test]
+fn imports_are_followed() {
+    let root = std::fs::canonicalize(concat!(env!("CARGO_MANIFEST_DIR"), "/../..")).unwrap();
+    let path = root.join("tests/components/dead_imported.sc");
+    let text = std::fs::read_to_string(&path).unwrap();
+    let uri = format!("file://{}", path.display());
+    let mut c = Client::start();
+    let d = c.open_uri(&uri, &text);
+    assert_eq!(d["diagnostics"], json!([]), "{d}");
+    // Line 5 is `  instance l: Latch;`: `Latch` at 14..19.
+    let def = c.at_uri(&uri, "textDocument/definition", 5, 16, json!({}));
+    let lib = root.join("tests/components/lib/latch.sc");
+    assert_eq!(
+        def["uri"],
+        json!(format!("file://{}", lib.display())),
+        "{def}"
+    );
+    assert_eq!(def["range"], range(1, 6, 1, 11));
 }
 
 #[test]

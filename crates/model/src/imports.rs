@@ -380,6 +380,8 @@ fn kept_charts(file: &ast::File, wanted: Option<&BTreeSet<String>>) -> Option<BT
         if let ast::Item::System(s) = it {
             if keep.contains(&s.name.name) {
                 keep.extend(s.instances.iter().map(|i| i.chart.name.clone()));
+                let bound = s.configurations.iter().flat_map(|c| &c.bindings);
+                keep.extend(bound.map(|b| b.chart.name.clone()));
             }
         }
     }
@@ -394,6 +396,7 @@ fn item_name(it: &ast::Item) -> Option<&str> {
         ast::Item::Fn(f) => &f.name.name,
         ast::Item::Chart(c) => &c.name.name,
         ast::Item::System(s) => &s.name.name,
+        ast::Item::Interface(i) => &i.name.name,
         ast::Item::Tick(_) | ast::Item::Import(_) => return None,
     })
 }

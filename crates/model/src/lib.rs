@@ -9,12 +9,14 @@
 
 mod cascade;
 mod chart;
+pub mod components;
 mod expr;
 pub mod formula;
 pub mod imports;
 pub mod lint;
 pub mod model;
 pub mod ops;
+mod params;
 mod property;
 mod rate;
 mod rebase;
@@ -39,6 +41,45 @@ pub fn check(file: &ast::File) -> (Model, Vec<Diagnostic>) {
     let mut early = Vec::new();
     collect_globals(file, &mut globals, &mut early);
     check_consts_and_fns(file, &mut globals, &mut early);
+    // Systems with configurations become one system per configuration (`components.rs`).
+    let configured = components::expand(file, &mut early);
+    let (file, sys_origins) = match &configured {
+        Some(c) => (&c.file, c.origins.as_slice()),
+        None => (file, &[][..]),
+    };
+    // Parameterised charts become one ordinary chart per argument list (`params.rs`).
+    let expanded = {
+        let view = globals.clone();
+        let mut sub = ExprChecker {
+            globals: &view,
+            sink: Sink {
+                diags: Vec::new(),
+                muted: 0,
+            },
+            next_local: 0,
+        };
+        let e = params::expand(file, &mut sub);
+        early.extend(sub.sink.diags);
+        e
+    };
+    let (file, origins) = match &expanded {
+        Some(e) => {
+            globals.chart_ids.clear();
+            let charts = e.file.items.iter().filter_map(|i| match i {
+                ast::Item::Chart(c) => Some(c),
+                _ => None,
+            });
+            for (id, c) in charts.enumerate() {
+                globals
+                    .chart_ids
+                    .entry(c.name.name.clone())
+                    .or_insert(id as ChartId);
+            }
+            (&e.file, e.origins.as_slice())
+        }
+        None => (file, &[][..]),
+    };
+    let origin = |id: usize| origins.get(id).unwrap_or(&params::Origin::Plain);
     let globals_ref = &globals;
     let consts_snapshot = globals_ref.const_order.clone();
     let mut ck = ExprChecker {
@@ -59,20 +100,34 @@ pub fn check(file: &ast::File) -> (Model, Vec<Diagnostic>) {
             _ => None,
         })
         .collect();
-    let skeletons: Vec<_> = chart_asts
-        .iter()
-        .map(|c| chart::skeleton(&mut ck, c, model::ChartRole::of(c)))
-        .collect();
+    let mut skeletons = Vec::new();
+    for (id, c) in chart_asts.iter().enumerate() {
+        let before = ck.sink.diags.len();
+        skeletons.push(chart::skeleton(&mut ck, c, model::ChartRole::of(c)));
+        params::annotate(&mut ck.sink.diags, before, origin(id), &c.name.name);
+    }
     let mut charts: Vec<Chart> = Vec::new();
-    for (sk, c) in skeletons.into_iter().zip(&chart_asts) {
+    for (id, (sk, c)) in skeletons.into_iter().zip(&chart_asts).enumerate() {
+        let before = ck.sink.diags.len();
         let filled = chart::fill(&mut ck, sk, c, None, &[]);
+        params::annotate(&mut ck.sink.diags, before, origin(id), &c.name.name);
         charts.push(filled);
+    }
+    for (id, c) in chart_asts.iter().enumerate() {
+        if *origin(id) != params::Origin::Placeholder {
+            let before = ck.sink.diags.len();
+            components::conformance(file, c, &charts[id], &mut ck);
+            params::annotate(&mut ck.sink.diags, before, origin(id), &c.name.name);
+        }
     }
 
     let mut systems = Vec::new();
     let mut system_names: HashMap<String, Span> = HashMap::new();
+    let mut sys_index = 0;
     for item in &file.items {
         if let ast::Item::System(s) = item {
+            let sys_origin = sys_origins.get(sys_index).cloned().flatten();
+            sys_index += 1;
             if let Some(prev) = system_names.insert(s.name.name.clone(), s.name.span) {
                 ck.sink.push(
                     Diagnostic::error(
@@ -85,12 +140,22 @@ pub fn check(file: &ast::File) -> (Model, Vec<Diagnostic>) {
                 );
                 continue;
             }
+            let before = ck.sink.diags.len();
             systems.push(system::check_system(&mut ck, s, &mut charts));
+            if let Some((config, at)) = sys_origin {
+                for d in &mut ck.sink.diags[before..] {
+                    *d = d
+                        .clone()
+                        .with_secondary(at, format!("in configuration `{config}`"));
+                }
+            }
         }
     }
     // Every top-level chart can also run alone, as a system of one instance named like it.
     for (id, c) in chart_asts.iter().enumerate() {
-        if system_names.contains_key(&c.name.name) {
+        if system_names.contains_key(&c.name.name)
+            || !matches!(origin(id), params::Origin::Plain | params::Origin::Defaults)
+        {
             continue;
         }
         let mut properties = charts[id].properties.clone();
@@ -138,6 +203,10 @@ pub fn check(file: &ast::File) -> (Model, Vec<Diagnostic>) {
         diags.extend(lint::lint(&model));
     }
     diags.sort_by_key(|d| (d.span.start, d.span.end));
+    if expanded.is_some() || configured.is_some() {
+        params::dedup(&mut diags);
+        components::suppress_slot_cascades(file, &mut diags);
+    }
     (model, diags)
 }
 
@@ -220,6 +289,9 @@ fn collect_globals(file: &ast::File, g: &mut Globals, diags: &mut Vec<Diagnostic
                     let index = g.fns.len();
                     g.fns.insert(f.name.name.clone(), (index, f.clone()));
                 }
+            }
+            ast::Item::Interface(i) => {
+                declare(&i.name, diags);
             }
             ast::Item::System(_) | ast::Item::Import(_) => {}
             ast::Item::Tick(t) => {

@@ -25,9 +25,7 @@ mod reach;
 mod trans;
 mod usage;
 
-use crate::model::{
-    ChartId, ChartRole, Dest, Expr, ExprKind, Model, StateId, System, VarId, VarRef,
-};
+use crate::model::{ChartId, Dest, Expr, ExprKind, Model, StateId, System, VarId, VarRef};
 use crate::types::Type;
 use statecheck_base::Diagnostic;
 
@@ -121,9 +119,7 @@ impl<'a> Cx<'a> {
 
     /// True for the top-level state `error` of an observer chart.
     fn is_observer_error(&self, chart: ChartId, s: StateId) -> bool {
-        let c = &self.model.charts[chart as usize];
-        let node = &c.states[s as usize];
-        c.role == ChartRole::Observer && node.parent == Some(0) && node.name == "error"
+        self.model.charts[chart as usize].is_observer_error(s)
     }
 }
 

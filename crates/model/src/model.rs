@@ -525,6 +525,17 @@ impl Chart {
         chain
     }
 
+    /// True for the top-level state `error` of an observer: entering it is the observer's
+    /// property violated, so it is meant never to be entered (not dead design, not a
+    /// coverage gap; docs/lints.md).
+    pub fn is_observer_error(&self, s: StateId) -> bool {
+        self.role == ChartRole::Observer
+            && self
+                .states
+                .get(s as usize)
+                .is_some_and(|n| n.parent == Some(0) && n.name == "error")
+    }
+
     /// True when `a` is `d` or one of its ancestors.
     pub fn is_ancestor_or_self(&self, a: StateId, d: StateId) -> bool {
         let mut cur = Some(d);

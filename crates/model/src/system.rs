@@ -361,7 +361,9 @@ fn check_connections(
             if fi == ti {
                 ck.sink.push(
                     Diagnostic::warning("W0202", "an instance connected to itself", c.span)
-                        .with_hint("the input sees the output of the previous tick"),
+                        .with_hint(
+                            "the input is the output itself: it reads what this instance wrote earlier in this step, else the previous tick's value",
+                        ),
                 );
             }
             out.push(Connection {

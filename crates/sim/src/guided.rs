@@ -36,6 +36,7 @@ impl Guide {
                 .covers
                 .iter()
                 .map(|c| match c.kind {
+                    _ if c.expected_unreached => 0,
                     CoverKind::State(_) => 4,
                     _ => 1,
                 })

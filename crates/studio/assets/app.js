@@ -11,8 +11,15 @@ let ws, nextId = 1;
 const waiting = new Map();
 let running = false, busy = false;
 
+// The session's resume key lives in this tab's sessionStorage: a reload presents it and the
+// server resumes the run (it keeps a closed page's session for a while, see docs/studio.md).
+const RESUME = 'statecheck-resume';
 function connect() {
-  ws = new WebSocket(`${location.protocol === 'https:' ? 'wss' : 'ws'}://${location.host}/ws?token=${encodeURIComponent(token)}`);
+  performance.mark('studio-connect');
+  let resume = '';
+  try { resume = sessionStorage.getItem(RESUME) || ''; } catch (e) { resume = ''; }
+  ws = new WebSocket(`${location.protocol === 'https:' ? 'wss' : 'ws'}://${location.host}/ws?token=${encodeURIComponent(token)}` +
+    (resume ? `&resume=${encodeURIComponent(resume)}` : ''));
   ws.onmessage = ev => receive(JSON.parse(ev.data));
   ws.onclose = () => { toast('connection closed — reload the page', true); setRunning(false); };
 }
@@ -26,8 +33,11 @@ function send(req) {
 studio.send = send;
 
 function receive(m) {
+  if (m.resume) { try { sessionStorage.setItem(RESUME, m.resume); } catch (e) { /* storage disabled */ } }
   if (m.type === 'model') {
+    performance.mark('studio-model');
     if (m.session !== undefined) setModel(m.model);
+    performance.mark('studio-charts');
   } else if (m.type === 'diagnostics') {
     showDiagnostics(m.diagnostics);
   } else if (m.type === 'state') {
@@ -70,7 +80,7 @@ function showDiagnostics(list) {
 
 function escapeHtml(s) { return String(s).replace(/&/g, '&amp;').replace(/</g, '&lt;').replace(/>/g, '&gt;'); }
 
-async function setModel(model) {
+function setModel(model) {
   studio.ready = false;
   $('#diag').hidden = true;
   studio.model = model;
@@ -82,10 +92,11 @@ async function setModel(model) {
   buildPresets();
   buildControls();
   defaultSelection();
-  const t0 = performance.now();
-  await buildCharts();
-  studio.layoutMs = performance.now() - t0;
+  studio.layoutStart = performance.now();
+  buildCharts();
+  if (studio.laidOut) { studio.layoutMs = 0; performance.mark('studio-laid-out'); }
   render();
+  studio.painted = false;
   studio.ready = true;
 }
 
@@ -214,28 +225,58 @@ function applyPreset(p, fault) {
 }
 
 // ---------------------------------------------------------------- charts
-async function buildCharts() {
+// Layouts are computed by ELK in a worker (layout-worker.js), once per chart (instances share
+// it), and kept in the browser's storage keyed by a hash of the chart's description. Until a
+// chart's layout arrives its cards show the provisional drawing of `Chart.quick`, already
+// highlighted and animated, so the page is interactive at once.
+let worker = null, workerSeq = 0;
+const workerWaiting = new Map();
+function startWorker() {
+  if (!worker) {
+    worker = new Worker('/layout-worker.js');
+    worker.onmessage = e => {
+      const w = workerWaiting.get(e.data.id);
+      workerWaiting.delete(e.data.id);
+      if (w) { if (e.data.error) w.reject(new Error(e.data.error)); else w.resolve(e.data.svg); }
+    };
+    worker.onerror = e => {
+      for (const w of workerWaiting.values()) w.reject(new Error(e.message || 'layout worker failed'));
+      workerWaiting.clear();
+      worker = null;
+    };
+  }
+}
+function layoutInWorker(chart) {
+  startWorker();
+  const id = ++workerSeq;
+  return new Promise((resolve, reject) => {
+    workerWaiting.set(id, {resolve, reject});
+    worker.postMessage({id, chart});
+  });
+}
+
+let generation = 0;
+function buildCharts() {
   const box = $('#charts');
   box.innerHTML = '';
   const m = studio.model;
-  const svgText = {};
-  // Each chart is laid out once (instances share it) and the drawing is kept in the
-  // browser's storage, keyed by the chart's description, so a reload draws at once.
+  const gen = ++generation;
+  studio.afterPaint = null;
+  const svgText = {}, pending = [];
   for (const inst of m.instances) {
     if (inst.chart in svgText) continue;
-    const desc = JSON.stringify(m.charts[inst.chart]);
-    const key = 'statecheck-layout-v1:' + hash(desc);
+    const key = 'statecheck-layout-v1:' + hash(JSON.stringify(m.charts[inst.chart]));
     let svg = null;
     try { svg = localStorage.getItem(key); } catch (e) { svg = null; }
     if (!svg) {
-      svg = await Chart.layout(m.charts[inst.chart]);
-      try { localStorage.setItem(key, svg); } catch (e) { /* storage full or disabled */ }
+      svg = Chart.quick(m.charts[inst.chart]);
+      pending.push({chart: inst.chart, key});
     }
     svgText[inst.chart] = svg;
   }
-  studio.svgs = m.instances.map((inst, k) => {
+  studio.svgs = m.instances.map(inst => {
     const card = document.createElement('div');
-    card.className = 'card';
+    card.className = 'card' + (pending.some(p => p.chart === inst.chart) ? ' pending' : '');
     card.dataset.instance = inst.name;
     card.innerHTML = `<div class="cardhead">${escapeHtml(inst.name)}<span class="chartname">${escapeHtml(m.charts[inst.chart].name)}${inst.observer ? ' · observer' : ''}</span></div>` + svgText[inst.chart];
     box.appendChild(card);
@@ -244,6 +285,45 @@ async function buildCharts() {
   // Many instances side by side: start smaller (master + 5 FAMs has 19 instances).
   $('#zoom').value = m.instances.length > 8 ? '0.5' : '1';
   zoom();
+  studio.laidOut = !pending.length;
+  if (!pending.length) return;
+  // The layouts start once the first state is drawn (the page is interactive first; the worker
+  // would compete with it for the processor), in instance order.
+  studio.afterPaint = () => layoutPending(m, gen, pending);
+}
+
+function layoutPending(m, gen, pending) {
+  let left = pending.length;
+  for (const {chart, key} of pending) {
+    layoutInWorker(m.charts[chart]).then(svg => {
+      try { localStorage.setItem(key, svg); } catch (e) { /* storage full or disabled */ }
+      if (gen !== generation) return;
+      m.instances.forEach((inst, k) => {
+        if (inst.chart !== chart) return;
+        const old = studio.svgs[k];
+        const holder = document.createElement('div');
+        holder.innerHTML = svg;
+        const fresh = holder.firstChild;
+        old.replaceWith(fresh);
+        studio.svgs[k] = fresh;
+        const card = fresh.closest('.card');
+        if (card) card.classList.remove('pending');
+      });
+      zoom();
+      render();
+    }).catch(e => {
+      if (gen !== generation) return;
+      toast(`layout of ${m.charts[chart].name} failed (${e.message}); the provisional drawing stays`, true);
+      m.instances.forEach((inst, k) => { if (inst.chart === chart && studio.svgs[k]) studio.svgs[k].closest('.card').classList.remove('pending'); });
+    }).finally(() => {
+      if (gen !== generation) return;
+      if (--left === 0) {
+        studio.laidOut = true;
+        studio.layoutMs = performance.now() - studio.layoutStart;
+        performance.mark('studio-laid-out');
+      }
+    });
+  }
 }
 
 // A 53-bit string hash (cyrb53), for layout cache keys.
@@ -278,6 +358,13 @@ function applyState(m) {
   studio.cursor = studio.records.length - 1;
   syncControls();
   render();
+  if (!studio.painted) {
+    studio.painted = true;
+    performance.mark('studio-interactive');
+    const then = studio.afterPaint;
+    studio.afterPaint = null;
+    if (then) then();
+  }
 }
 
 function shown() {
@@ -310,7 +397,17 @@ function renderStatus() {
   if (studio.cursor < studio.records.length - 1) s += ` · viewing tick ${studio.cursor}`;
   if (run.future) s += ` · ${run.future} to redo`;
   if (run.stop) s += ` · <span class="stop">${escapeHtml(run.stop.message)}</span>`;
+  const l = run.lasso;
+  if (l) {
+    s += l.broken ? ` · <span class="stop">not a lasso of this model</span>`
+      : ` · <span class="lasso">loop ${l.start}–${l.end - 1}${l.following ? ' (Step goes around it)' : ', left'}</span>`;
+    if (l.violated) s += ` · <span class="stop">${escapeHtml(l.violated.message)} (on the infinite run)</span>`;
+  }
   $('#status').innerHTML = s;
+  // Viewing an earlier tick, Back branches there.
+  const past = studio.cursor >= 0 && studio.cursor < studio.records.length - 1;
+  $('#back').textContent = past ? `⑂ Branch at ${studio.cursor}` : '◀ Back';
+  $('#back').title = past ? `Continue interactively from tick ${studio.cursor} (the later ticks are kept for Redo)` : 'Step back one tick (←)';
   $('#forward').disabled = !run.future;
   $('#back').disabled = t === 0;
   for (const id of ['#step', '#stepn', '#run']) $(id).disabled = !!run.stop;
@@ -344,6 +441,12 @@ function renderMessages() {
   const run = studio.run;
   const items = [];
   if (run && run.stop) items.push(`<div class="msg" data-t="${run.stop.tick}">${escapeHtml(run.stop.message)}</div>`);
+  const l = run && run.lasso;
+  if (l) {
+    if (l.violated) items.push(`<div class="msg lassov" data-t="${l.violated.tick}">${escapeHtml(l.violated.message)}: the ticks 0–${l.end - 1}, then ${l.start}–${l.end - 1} forever</div>`);
+    if (l.broken) items.push(`<div class="msg" data-t="${l.end - 1}">${escapeHtml(l.broken)}</div>`);
+    else items.push(`<div class="msg info lassostart" data-t="${l.start}">↻ the loop starts at tick ${l.start}${l.fair ? '' : ' (not fair: temporal properties not evaluated)'}</div>`);
+  }
   if (studio.lastLoaded) items.push(`<div class="msg info">replaying ${escapeHtml(studio.lastLoaded)}</div>`);
   box.innerHTML = items.join('');
   for (const d of box.querySelectorAll('.msg[data-t]')) d.onclick = () => { setCursor(+d.dataset.t); };
@@ -417,7 +520,7 @@ let waveGeom = null;
 function renderSignals() {
   const m = studio.model;
   if (studio.tab === 'wave') {
-    waveGeom = Wave.draw($('#wave'), m, studio.records, studio.selection, studio.cursor);
+    waveGeom = Wave.draw($('#wave'), m, studio.records, studio.selection, studio.cursor, studio.run && studio.run.lasso);
   } else {
     Wave.drawMsc($('#msc'), m, studio.records, studio.cursor, t => setCursor(t));
   }
@@ -516,3 +619,4 @@ function wire() {
 
 wire();
 connect();
+

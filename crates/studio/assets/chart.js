@@ -6,7 +6,9 @@
 
 const Chart = (() => {
   const NAME_W = 7.6, MONO_W = 6.6, LINE_H = 13, LABEL_MAX = 46;
-  const elk = new ELK();
+  // Created on first use: on the page ELK runs in a worker (`layout-worker.js`), so the page
+  // itself never loads the 1.6 MB library.
+  let elk = null;
   // Exclusive (OR) levels: layered, top-down, transitions routed orthogonally across levels.
   const LAYERED = {
     'elk.algorithm': 'layered',
@@ -181,6 +183,7 @@ const Chart = (() => {
   // Lay out a chart; resolves to the SVG text (without instance-specific state).
   async function layout(chart) {
     const g = graph(chart);
+    if (!elk) elk = new ELK();
     const out = await elk.layout(g.root);
     const parts = [];
     const W = Math.ceil(out.width), H = Math.ceil(out.height);
@@ -228,6 +231,118 @@ const Chart = (() => {
     return parts.join('');
   }
 
+
+  // A provisional drawing computed at once, without ELK, shown while the worker lays the chart
+  // out: the same state boxes (classes, `data-sid`, badges) nested in a simple grid, the
+  // transitions as straight arrows (same `data-t`, so firing is marked) with their labels as
+  // tooltips. Replaced by the ELK drawing when it arrives.
+  function quick(chart) {
+    const S = chart.states;
+    const internal = {};
+    for (const t of chart.transitions) {
+      if (t.dest.kind === 'internal') (internal[t.source] = internal[t.source] || []).push(t);
+    }
+    const textLines = sid => {
+      const st = S[sid];
+      const lines = [];
+      if (st.actions.length) lines.push(st.actions.join(', ') + ':  …');
+      for (const t of internal[sid] || []) for (const l of wrap(t.label, LABEL_MAX)) lines.push(l);
+      return lines;
+    };
+    const box = {};  // sid -> {w, h, lines, order, kids}
+    const GAP = 26;
+    function size(sid, order, depth) {
+      const st = S[sid];
+      const lines = sid === 0 ? [] : textLines(sid);
+      const nameW = st.name.length * NAME_W + (order ? 30 : 22) + 36;
+      const linesW = Math.max(0, ...lines.map(l => l.length * MONO_W)) + 18;
+      const b = {w: 0, h: 0, lines, order, kids: []};
+      box[sid] = b;
+      if (st.kind === 'simple' || !st.children.length || depth > 64) {
+        b.w = Math.max(86, nameW, linesW);
+        b.h = 30 + lines.length * LINE_H;
+        return b;
+      }
+      const and = st.kind === 'and';
+      const kids = st.children.map((c, k) => size(c, and ? k + 1 : 0, depth + 1));
+      const cols = Math.max(1, Math.ceil(Math.sqrt(kids.length * (and ? 1.9 : 1.2))));
+      const top = (sid === 0 ? 12 : 26 + lines.length * LINE_H) + (st.initial !== null && st.initial !== undefined ? 14 : 0);
+      const pad = sid === 0 ? 12 : 14;
+      let y = top, maxW = 0;
+      for (let r = 0; r < kids.length; r += cols) {
+        const row = kids.slice(r, r + cols);
+        let x = pad, rowH = 0;
+        for (const k of row) { k.x = x; k.y = y; x += k.w + (and ? 14 : GAP); rowH = Math.max(rowH, k.h); }
+        maxW = Math.max(maxW, x - (and ? 14 : GAP) + pad);
+        y += rowH + (and ? 14 : GAP + 8);
+      }
+      b.kids = st.children;
+      b.w = Math.max(maxW, nameW, linesW, 60);
+      b.h = y - (and ? 14 : GAP + 8) + pad;
+      return b;
+    }
+    const root = size(0, 0, 0);
+    const abs = {};
+    (function place(sid, ox, oy) {
+      const b = box[sid];
+      abs[sid] = {x: ox, y: oy, w: b.w, h: b.h};
+      for (const c of b.kids) place(c, ox + box[c].x, oy + box[c].y);
+    })(0, 0, 0);
+    const W = Math.ceil(root.w), H = Math.ceil(root.h);
+    const parts = [`<svg xmlns="http://www.w3.org/2000/svg" class="provisional" width="${W}" height="${H}" viewBox="0 0 ${W} ${H}">`];
+    parts.push('<defs><marker id="arrow" viewBox="0 0 10 10" refX="9" refY="5" markerWidth="7" markerHeight="7" orient="auto-start-reverse"><path d="M0,0 L10,5 L0,10 z" fill="#4a5366"/></marker>' +
+      '<marker id="arrowF" viewBox="0 0 10 10" refX="9" refY="5" markerWidth="6" markerHeight="6" orient="auto-start-reverse"><path d="M0,0 L10,5 L0,10 z" fill="#e0671b"/></marker></defs>');
+    (function draw(sid) {
+      const st = S[sid], b = box[sid], a = abs[sid];
+      if (sid !== 0) {
+        const kind = st.region ? 'region' : st.kind === 'simple' ? 'leaf' : 'composite';
+        parts.push(`<g class="st ${kind}" data-sid="${sid}"><title>${esc(st.path)}</title><rect x="${a.x}" y="${a.y}" width="${a.w}" height="${a.h}" rx="${st.region ? 3 : 9}"/>`);
+        parts.push(`<text class="name" x="${a.x + 8}" y="${a.y + 16}">${esc(st.name)}</text>`);
+        if (b.order) parts.push(`<text class="acts" x="${a.x + a.w - 8}" y="${a.y + 14}" text-anchor="end">${b.order}</text>`);
+        b.lines.forEach((l, k) => parts.push(`<text class="acts" x="${a.x + 8}" y="${a.y + 30 + k * LINE_H}">${esc(l)}</text>`));
+        parts.push(`<g class="badge" data-badge-sid="${sid}" transform="translate(${a.x + a.w - (b.order ? 40 : 10)},${a.y + 4})"></g></g>`);
+      }
+      if (st.initial !== null && st.initial !== undefined && abs[st.initial]) {
+        const t = abs[st.initial];
+        const cx = t.x + 10, cy = t.y - 12;
+        parts.push(`<g class="init"><circle cx="${cx}" cy="${cy}" r="4.5"/></g><g class="tr init"><path d="M${cx},${cy + 4} L${cx},${t.y}" marker-end="url(#arrow)"/></g>`);
+      }
+      if (st.history && sid !== 0) {
+        parts.push(`<g class="hist"><circle cx="${a.x + a.w - 16}" cy="${a.y + 16}" r="9.5"/><text x="${a.x + a.w - 16}" y="${a.y + 19.5}">${st.history === 'deep' ? 'H*' : 'H'}</text></g>`);
+      }
+      for (const c of b.kids) draw(c);
+    })(0);
+    // Where the segment from the centre of `a` towards `p` leaves the box `a`.
+    const exit = (a, p) => {
+      const cx = a.x + a.w / 2, cy = a.y + a.h / 2, dx = p.x - cx, dy = p.y - cy;
+      const k = Math.min(dx ? (a.w / 2) / Math.abs(dx) : Infinity, dy ? (a.h / 2) / Math.abs(dy) : Infinity, 1);
+      return {x: cx + dx * k, y: cy + dy * k};
+    };
+    const firstState = d => {
+      if (d.kind === 'state') return d.state;
+      if (d.kind === 'choice') for (const br of d.branches) { const s = firstState(br.dest); if (s !== null) return s; }
+      return null;
+    };
+    for (const t of chart.transitions) {
+      const to = firstState(t.dest);
+      if (to === null || !abs[t.source] || !abs[to]) continue;
+      const a = abs[t.source], b = abs[to];
+      let p, q;
+      if (t.source === to) {
+        p = {x: a.x + a.w, y: a.y + a.h / 3};
+        q = {x: a.x + a.w, y: a.y + (2 * a.h) / 3};
+        parts.push(`<g class="tr tr" data-t="${t.id}"><title>${esc(t.label || '')}</title><path d="M${p.x},${p.y} C${p.x + 30},${p.y} ${q.x + 30},${q.y} ${q.x},${q.y}" marker-end="url(#arrow)"/></g>`);
+        continue;
+      }
+      const ca = {x: a.x + a.w / 2, y: a.y + a.h / 2}, cb = {x: b.x + b.w / 2, y: b.y + b.h / 2};
+      p = exit(a, cb);
+      q = exit(b, ca);
+      parts.push(`<g class="tr tr" data-t="${t.id}"><title>${esc(t.label || '')}</title><path d="M${p.x.toFixed(1)},${p.y.toFixed(1)} L${q.x.toFixed(1)},${q.y.toFixed(1)}" marker-end="url(#arrow)"/></g>`);
+    }
+    parts.push('</svg>');
+    return parts.join('');
+  }
+
   // Highlight one instance's chart for a tick record; coverage: counts per cover item or null.
   function paint(svg, inst, rec, model, coverage) {
     const active = new Set(rec && rec.active_ids ? rec.active_ids[inst] : []);
@@ -264,15 +379,21 @@ const Chart = (() => {
         holder = svg.querySelector(`g.badge[data-badge-t="${c.transition}"][data-badge-b="${c.branch}"]`);
         owner = svg.querySelector(`g.tr[data-t="${c.transition}"][data-b="${c.branch}"]`);
       }
-      if (owner && n === 0) owner.classList.add('never');
+      // An observer's `error` state is meant never to be entered: not a gap.
+      const gap = n === 0 && !c.expected_unreached;
+      if (owner && gap) owner.classList.add('never');
       if (holder) {
         const txt = '×' + n;
         const w = txt.length * 6 + 6;
         const dx = c.kind === 'state' ? -w : 0;
-        holder.innerHTML = `<rect x="${dx}" y="0" width="${w}" height="13" rx="6.5" class="${n === 0 ? 'never' : ''}" style="fill:${n === 0 ? '#c0392b' : '#6a7383'}"/><text x="${dx + 3}" y="10">${txt}</text>`;
+        holder.innerHTML = `<rect x="${dx}" y="0" width="${w}" height="13" rx="6.5" class="${gap ? 'never' : ''}" style="fill:${gap ? '#c0392b' : '#6a7383'}"/><text x="${dx + 3}" y="10">${txt}</text>`;
       }
     });
   }
 
-  return {layout, paint, wrap};
+  // Create the ELK instance now (in a worker, ELK's bundle installs its own `onmessage` when
+  // first instantiated; the worker sets its handler after this).
+  function init() { if (!elk) elk = new ELK(); }
+
+  return {init, layout, quick, paint, wrap};
 })();

@@ -8,7 +8,7 @@ const Wave = (() => {
 
   function laneHeight(v) { return v.type === 'bool' || v.isEvent ? 22 : 34; }
 
-  function draw(canvas, model, records, sel, cursor) {
+  function draw(canvas, model, records, sel, cursor, lasso) {
     const dpr = window.devicePixelRatio || 1;
     const wrap = canvas.parentElement;
     const n = Math.max(records.length, 1);
@@ -98,6 +98,20 @@ const Wave = (() => {
         g.font = '11px Helvetica, Arial, sans-serif';
       }
       y += h;
+    }
+    // A lasso: its loop shaded, each further lap too, the loop's start marked on the axis.
+    if (lasso && lasso.end > lasso.start) {
+      const period = lasso.end - lasso.start;
+      for (let a = lasso.start, lap = 0; a < n; a += period, lap++) {
+        g.fillStyle = lap % 2 ? 'rgba(142,68,173,0.05)' : 'rgba(142,68,173,0.10)';
+        g.fillRect(LABEL_W + a * px, AXIS_H - 4, Math.min(period, n - a) * px, H - AXIS_H + 4);
+      }
+      const x = LABEL_W + lasso.start * px;
+      g.strokeStyle = '#8e44ad'; g.lineWidth = 1.5; g.setLineDash([4, 3]);
+      g.beginPath(); g.moveTo(x, AXIS_H - 6); g.lineTo(x, H); g.stroke();
+      g.setLineDash([]); g.lineWidth = 1;
+      g.fillStyle = '#8e44ad';
+      g.fillText(`↻ loop ${lasso.start}–${lasso.end - 1}`, x + 3, AXIS_H - 1);
     }
     if (cursor >= 0) {
       const x = LABEL_W + (cursor + 0.5) * px;

@@ -46,10 +46,11 @@ function sim(model, system, scn) {
   return JSON.parse(out.toString());
 }
 
+// Open the page; wait until it is interactive and every chart has its final (ELK) layout.
 async function open(page, url) {
   const t0 = Date.now();
   await page.goto(url);
-  await page.waitForFunction(() => window.studio && window.studio.ready && window.studio.run, null, {timeout: 30000});
+  await page.waitForFunction(() => window.studio && window.studio.ready && window.studio.run && window.studio.laidOut, null, {timeout: 60000});
   return Date.now() - t0;
 }
 
@@ -105,11 +106,44 @@ async function checkAgainstSim(page, model, system, name) {
   return ref;
 }
 
+// The issue's layout bar: in every chart's final drawing no two state boxes overlap unless one
+// holds the other, no two transition labels overlap, and no label overlaps a leaf state.
+// Measured on the SVG the browser rendered (text boxes as the browser sizes them).
+async function overlaps(page) {
+  return page.evaluate(() => {
+    const out = [], seen = new Set();
+    const inter = (a, b) => a.x < b.x + b.w - 0.5 && b.x < a.x + a.w - 0.5 && a.y < b.y + b.h - 0.5 && b.y < a.y + a.h - 0.5;
+    const holds = (p, q) => p.x <= q.x && p.y <= q.y && p.x + p.w >= q.x + q.w && p.y + p.h >= q.y + q.h;
+    const box = b => ({x: b.x, y: b.y, w: b.width, h: b.height});
+    studio.model.instances.forEach((inst, k) => {
+      if (seen.has(inst.chart)) return;
+      seen.add(inst.chart);
+      const svg = studio.svgs[k], name = studio.model.charts[inst.chart].name;
+      const states = [...svg.querySelectorAll('g.st > rect')].map(r => ({n: r.parentNode.querySelector('title').textContent, leaf: r.parentNode.classList.contains('leaf'), ...box(r.getBBox())}));
+      const labels = [...svg.querySelectorAll('g.tr')].filter(g => g.querySelector(':scope > text')).map(g => {
+        const ts = [...g.querySelectorAll(':scope > text')].map(t => t.getBBox());
+        const x = Math.min(...ts.map(b => b.x)), y = Math.min(...ts.map(b => b.y));
+        return {n: g.querySelector('text').textContent, x, y, w: Math.max(...ts.map(b => b.x + b.width)) - x, h: Math.max(...ts.map(b => b.y + b.height)) - y};
+      });
+      for (let i = 0; i < states.length; i++) for (let j = i + 1; j < states.length; j++) {
+        const a = states[i], b = states[j];
+        if (!holds(a, b) && !holds(b, a) && inter(a, b)) out.push(`${name}: states ${a.n} and ${b.n}`);
+      }
+      for (let i = 0; i < labels.length; i++) for (let j = i + 1; j < labels.length; j++) {
+        if (inter(labels[i], labels[j])) out.push(`${name}: labels "${labels[i].n}" and "${labels[j].n}"`);
+      }
+      for (const l of labels) for (const st of states) if (st.leaf && inter(l, st)) out.push(`${name}: label "${l.n}" on state ${st.n}`);
+    });
+    return out;
+  });
+}
+
 async function famClosedLoop(browser) {
   const model = 'examples/fam/fam_system.sc';
   const url = await serve(model);
   const page = await browser.newPage({viewport: {width: 1680, height: 1050}, acceptDownloads: true});
   const ms = await open(page, url);
+  assert.deepStrictEqual(await overlaps(page), [], 'no overlapping boxes or labels (FAM closed loop)');
   console.log(`page load (fam_system.sc): ${ms} ms (layout ${Math.round(await page.evaluate(() => window.studio.layoutMs))} ms)`);
   await page.selectOption('#preset', 'closed');
   // The closed-loop preset shows the CCM and the faults only.
@@ -210,6 +244,67 @@ async function verifyInPage(browser) {
   assert.strictEqual(await page.evaluate(() => window.studio.run.stop.tick), 3);
   await page.check('#cov');
   await page.screenshot({path: path.join(SHOTS, 'verify.png')});
+  // The file changes under the page: a broken model shows its diagnostics (line 5: an unknown
+  // state), the fixed one (n counts by 2 now) re-applies the replayed ticks: with `go` in
+  // ticks 1.. n is 0, 2, 4 after ticks 0..2, so `small` (n < 3) is violated at tick 2 now and
+  // the run stops there, as sim stops.
+  const src = fs.readFileSync(model, 'utf8');
+  fs.writeFileSync(model, src.replace('-> B;', '-> Nowhere;'));
+  await page.waitForFunction(() => !document.querySelector('#diag').hidden, null, {timeout: 30000});
+  const diag = await page.textContent('#diag');
+  assert.ok(diag.includes(':5:') && diag.includes('Nowhere'), diag);
+  fs.writeFileSync(model, src.replace('n + 1', 'n + 2'));
+  await page.waitForFunction(() => document.querySelector('#diag').hidden && window.studio.model && window.studio.run && window.studio.records.length > 0, null, {timeout: 30000});
+  const after = await page.evaluate(() => ({n: window.studio.records.map(r => r.vars && r.vars['Count.n']), stop: window.studio.run.stop}));
+  assert.deepStrictEqual(after.n, [0, 2, 4], JSON.stringify(after));
+  assert.strictEqual(after.stop.message, 'property `small` violated at tick 2');
+  await page.close();
+}
+
+// A lasso from the page: verify a temporal property, replay its counterexample (prefix and
+// loop, the loop's start marked), step past the end around the loop. tests/verify/temporal.sc
+// system Free (by hand in its comments): `reaches3: F c.n == 3` is violated by a lasso on
+// which n never reaches 3. Independent checks: sim --json of the same scenario gives the same
+// ticks and message, and after the end the run repeats the loop (the lasso's definition:
+// the state after tick end-1+j is the state after tick start-1+j).
+async function lassoInPage(browser) {
+  const model = 'tests/verify/temporal.sc', system = 'Free';
+  const url = await serve(model, system);
+  const page = await browser.newPage({viewport: {width: 1500, height: 900}, acceptDownloads: true});
+  await open(page, url);
+  await page.selectOption('#engine', 'explicit');
+  await page.click('#verify');
+  await page.waitForFunction(() => /done/.test(document.querySelector('#vstate').textContent), null, {timeout: 120000});
+  const v = await page.evaluate(() => window.studio.verdicts.reaches3);
+  assert.strictEqual(v.verdict, 'violated');
+  assert.ok(/\nloop:\n/.test(v.scenario), v.scenario);
+  const file = path.join(TMP, 'lasso.scn');
+  fs.writeFileSync(file, v.scenario);
+  const ref = sim(model, system, file);
+  assert.strictEqual(ref.result.status, 'violated');
+  await page.click('#rlist .res[data-name="reaches3"]');
+  await page.waitForFunction(n => window.studio.run.lasso && window.studio.run.ticks === n, ref.ticks.length);
+  const lasso = await page.evaluate(() => window.studio.run.lasso);
+  assert.strictEqual(lasso.end, ref.ticks.length);
+  // The ticks written before the `loop:` line (a line `… * N` stands for N ticks).
+  const before = v.scenario.split('\nloop:\n')[0].split('\n').map(l => l.replace(/#.*/, '').trim()).filter(l => l);
+  const k = before.reduce((a, l) => a + (/\*\s*(\d+)$/.test(l) ? +l.match(/\*\s*(\d+)$/)[1] : 1), 0);
+  assert.strictEqual(lasso.start, k, 'loop start: ' + v.scenario);
+  assert.strictEqual(lasso.violated.message, ref.result.message);
+  const recs = await page.evaluate(() => window.studio.records);
+  recs.forEach((r, k) => { for (const key of ['active', 'vars', 'events']) assert.deepStrictEqual(r[key], ref.ticks[k][key], `tick ${k} ${key}`); });
+  assert.strictEqual(await page.$eval('#messages .lassostart', d => +d.dataset.t), lasso.start, 'the loop start is marked');
+  assert.ok((await page.textContent('#status')).includes(`loop ${lasso.start}–${lasso.end - 1}`));
+  await page.screenshot({path: path.join(SHOTS, 'lasso.png')});
+  // Around the loop, twice.
+  const period = lasso.end - lasso.start;
+  await stepN(page, 2 * period);
+  const all = await page.evaluate(() => window.studio.records);
+  for (let j = 0; j < 2 * period; j++) {
+    const a = all[lasso.end + j], b = all[lasso.start + (j % period)];
+    assert.deepStrictEqual([a.active, a.vars], [b.active, b.vars], `tick ${lasso.end + j} repeats tick ${lasso.start + (j % period)}`);
+  }
+  await checkAgainstSim(page, model, system, 'lasso-around.scn');
   await page.close();
 }
 
@@ -219,6 +314,7 @@ async function fam5(browser) {
   const page = await browser.newPage({viewport: {width: 1920, height: 1200}, acceptDownloads: true});
   const ms = await open(page, url);
   console.log(`page load (fam_system5.sc), first visit: ${ms} ms (layout ${Math.round(await page.evaluate(() => window.studio.layoutMs))} ms)`);
+  assert.deepStrictEqual(await overlaps(page), [], 'no overlapping boxes or labels (Fam, Controller, MasterBus5, …)');
   const again = await open(page, url);
   console.log(`page load (fam_system5.sc), reload with the layout cached: ${again} ms`);
   await page.check('#random');
@@ -238,13 +334,18 @@ async function linearDrive(browser) {
   const url = await serve(model);
   const page = await browser.newPage({viewport: {width: 1500, height: 950}, acceptDownloads: true});
   await open(page, url);
+  assert.deepStrictEqual(await overlaps(page), [], 'no overlapping boxes or labels (linear drive)');
   await page.check('#random');
   await page.fill('#n', '25');
   await page.click('#stepn');
   await page.waitForFunction(() => window.studio.run.ticks > 0);
   await page.waitForTimeout(300);
-  await checkAgainstSim(page, model, null, 'linear.scn');
+  const ref = await checkAgainstSim(page, model, null, 'linear.scn');
   await page.screenshot({path: path.join(SHOTS, 'linear_drive.png')});
+  // A browser reload resumes the session: the same ticks, as sim has them.
+  await page.reload();
+  await page.waitForFunction(n => window.studio && window.studio.ready && window.studio.run && window.studio.run.ticks === n && window.studio.laidOut, ref.ticks.length, {timeout: 60000});
+  await checkAgainstSim(page, model, null, 'linear-reloaded.scn');
   await page.close();
 }
 
@@ -252,7 +353,9 @@ async function linearDrive(browser) {
   fs.mkdirSync(SHOTS, {recursive: true});
   const browser = await chromium.launch({executablePath: CHROMIUM, args: ['--no-sandbox', '--disable-gpu']});
   let failed = false;
-  for (const [name, t] of [['fam closed loop', famClosedLoop], ['counterexample', counterexample], ['verify in the page', verifyInPage], ['fam_system5', fam5], ['linear drive', linearDrive]]) {
+  const only = process.env.STUDIO_E2E_ONLY;
+  for (const [name, t] of [['fam closed loop', famClosedLoop], ['counterexample', counterexample], ['verify in the page', verifyInPage], ['lasso', lassoInPage], ['fam_system5', fam5], ['linear drive', linearDrive]]) {
+    if (only && !name.includes(only)) continue;
     try { await t(browser); console.log(`ok   ${name}`); } catch (e) { failed = true; console.log(`FAIL ${name}: ${e.stack || e}`); }
   }
   await browser.close();

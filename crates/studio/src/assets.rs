@@ -20,6 +20,10 @@ pub fn get(name: &str) -> (&'static str, &'static str) {
             "text/javascript; charset=utf-8",
             include_str!("../assets/wave.js"),
         ),
+        "layout-worker.js" => (
+            "text/javascript; charset=utf-8",
+            include_str!("../assets/layout-worker.js"),
+        ),
         "style.css" => (
             "text/css; charset=utf-8",
             include_str!("../assets/style.css"),

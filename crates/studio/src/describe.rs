@@ -73,14 +73,19 @@ pub fn describe(l: &Loaded) -> Value {
     let covers: Vec<Value> = p
         .covers
         .iter()
-        .map(|c| match c.kind {
-            CoverKind::State(s) => json!({"instance": c.instance, "kind": "state", "state": s}),
-            CoverKind::Transition(t) => {
-                json!({"instance": c.instance, "kind": "transition", "transition": t})
-            }
-            CoverKind::Branch(t, b) => {
-                json!({"instance": c.instance, "kind": "branch", "transition": t, "branch": b})
-            }
+        .map(|c| {
+            let mut v = match c.kind {
+                CoverKind::State(s) => json!({"instance": c.instance, "kind": "state", "state": s}),
+                CoverKind::Transition(t) => {
+                    json!({"instance": c.instance, "kind": "transition", "transition": t})
+                }
+                CoverKind::Branch(t, b) => {
+                    json!({"instance": c.instance, "kind": "branch", "transition": t, "branch": b})
+                }
+            };
+            // An observer's `error` state (and what leads only to it): never a coverage gap.
+            v["expected_unreached"] = json!(c.expected_unreached);
+            v
         })
         .collect();
     let properties: Vec<Value> = p.properties.iter().map(|q| json!(q.name)).collect();

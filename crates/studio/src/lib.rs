@@ -11,6 +11,7 @@
 pub mod assets;
 pub mod describe;
 pub mod load;
+pub mod park;
 pub mod protocol;
 pub mod server;
 pub mod session;

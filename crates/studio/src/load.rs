@@ -110,7 +110,13 @@ fn choose<'m>(
             )
         });
     }
-    let explicit: Vec<_> = model.systems.iter().filter(|s| !s.implicit).collect();
+    // A system's configurations (`Plant:faulty`) are named explicitly, not counted.
+    let sep = statecheck_model::components::CONFIG_SEP;
+    let explicit: Vec<_> = model
+        .systems
+        .iter()
+        .filter(|s| !s.implicit && !s.name.contains(sep))
+        .collect();
     match explicit.as_slice() {
         [one] => return Ok(one),
         [] => {}

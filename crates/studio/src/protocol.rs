@@ -199,6 +199,14 @@ pub fn state(s: &Session, id: Option<u64>, truncate: Option<u64>, ticks: &[TickO
             "future": s.future_len(),
             "stop": s.stop().map(|st| stop(p, st, &loaded.source, &loaded.path)),
             "coverage": s.coverage(),
+            "lasso": s.lasso().map(|l| json!({
+                "start": l.start,
+                "end": l.end,
+                "following": l.following,
+                "fair": l.fair,
+                "broken": l.broken,
+                "violated": l.violated.as_ref().map(|st| stop(p, st, &loaded.source, &loaded.path)),
+            })),
         },
         "held": held(s),
     })

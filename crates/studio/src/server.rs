@@ -7,6 +7,7 @@
 //! and validated; a bad one gets an error reply and the session goes on.
 
 use crate::load::{self, Loaded, PageDiagnostic};
+use crate::park::Parking;
 use crate::protocol::{self, Request};
 use crate::session::Session;
 use axum::extract::ws::{Message, WebSocket, WebSocketUpgrade};
@@ -38,6 +39,7 @@ struct App {
     current: watch::Receiver<Current>,
     sessions: AtomicU64,
     live: AtomicU64,
+    parking: Parking,
 }
 
 /// Build the router for a model, with the allowed `Host` values and the token.
@@ -55,6 +57,10 @@ fn router(app: Arc<App>) -> Router {
         .route(
             "/wave.js",
             get(|h: HeaderMap, s: State<Arc<App>>| asset(h, s, "wave.js")),
+        )
+        .route(
+            "/layout-worker.js",
+            get(|h: HeaderMap, s: State<Arc<App>>| asset(h, s, "layout-worker.js")),
         )
         .route(
             "/style.css",
@@ -176,33 +182,62 @@ async fn ws(
     if q.get("token").is_none_or(|t| !same(t, &app.token)) {
         return refuse(StatusCode::FORBIDDEN, "missing or wrong token");
     }
+    let resume = q.get("resume").cloned();
     up.max_message_size(MAX_FRAME)
         .max_frame_size(MAX_FRAME)
-        .on_upgrade(move |socket| session(app, socket))
+        .on_upgrade(move |socket| session(app, socket, resume))
 }
 
-fn hello(cur: &Current, id: u64) -> String {
+/// The first message: the model (or its diagnostics), the session number and its resume key
+/// (128 random bits in hex).
+fn hello(cur: &Current, id: u64, key: &str) -> String {
     match cur {
         Ok(l) => format!(
-            "{{\"type\":\"model\",\"session\":{id},\"model\":{}}}",
+            "{{\"type\":\"model\",\"session\":{id},\"resume\":\"{key}\",\"model\":{}}}",
             l.description
         ),
-        Err(d) => json!({"type": "diagnostics", "session": id, "diagnostics": &**d}).to_string(),
+        Err(d) => json!({"type": "diagnostics", "session": id, "resume": key, "diagnostics": &**d})
+            .to_string(),
     }
 }
 
-async fn session(app: Arc<App>, mut socket: WebSocket) {
+/// The session for a new connection and the state message to send: the parked session of
+/// `key` (its inputs re-applied to the current model) or a fresh one.
+fn open_session(cur: &Current, parked: Option<Session>) -> (Option<Session>, Option<Value>) {
+    let Ok(l) = cur else {
+        return (None, None);
+    };
+    let Some(old) = parked else {
+        let s = Session::new(Arc::clone(l));
+        let v = protocol::state(&s, None, Some(0), &[]);
+        return (Some(s), Some(v));
+    };
+    let (s, ticks, note) = old.reapply(Arc::clone(l));
+    let mut v = protocol::state(&s, None, Some(0), &ticks);
+    v["note"] = json!(note);
+    (Some(s), Some(v))
+}
+
+async fn session(app: Arc<App>, mut socket: WebSocket, resume: Option<String>) {
     let id = app.sessions.fetch_add(1, Ordering::Relaxed) + 1;
     app.live.fetch_add(1, Ordering::Relaxed);
     let mut rx = app.current.clone();
     let cur = rx.borrow_and_update().clone();
-    let mut sess = cur.as_ref().ok().map(|l| Session::new(Arc::clone(l)));
+    // A reload presents its session's key: resume that session (same key); otherwise a new
+    // session gets a new random key.
+    let parked = resume.as_deref().and_then(|k| app.parking.take(k));
+    let key = match (&parked, resume) {
+        (Some(_), Some(k)) => k,
+        _ => random_token(),
+    };
+    let (mut sess, first) = open_session(&cur, parked);
+    let mut shelved: Option<Session> = None;
     let mut ok = socket
-        .send(Message::Text(hello(&cur, id).into()))
+        .send(Message::Text(hello(&cur, id, &key).into()))
         .await
         .is_ok();
-    if let Some(s) = &sess {
-        ok = ok && send(&mut socket, protocol::state(s, None, Some(0), &[])).await;
+    if let Some(v) = first {
+        ok = ok && send(&mut socket, v).await;
     }
     let (vtx, mut vrx) = tokio::sync::mpsc::unbounded_channel::<Value>();
     let verifying = Arc::new(std::sync::atomic::AtomicBool::new(false));
@@ -231,12 +266,26 @@ async fn session(app: Arc<App>, mut socket: WebSocket) {
             changed = rx.changed() => {
                 if changed.is_err() { break; }
                 let cur = rx.borrow_and_update().clone();
-                sess = cur.as_ref().ok().map(|l| Session::new(Arc::clone(l)));
-                ok = socket.send(Message::Text(hello(&cur, id).into())).await.is_ok();
-                if let Some(s) = &sess {
-                    ok = ok && send(&mut socket, protocol::state(s, None, Some(0), &[])).await;
+                // The inputs so far are re-applied to the changed model when they still apply.
+                // While the file does not check, the session waits on the shelf.
+                let prev = sess.take().or(shelved.take());
+                let first;
+                if cur.is_err() {
+                    shelved = prev;
+                    first = None;
+                } else {
+                    (sess, first) = open_session(&cur, prev);
+                }
+                ok = socket.send(Message::Text(hello(&cur, id, &key).into())).await.is_ok();
+                if let Some(v) = first {
+                    ok = ok && send(&mut socket, v).await;
                 }
             }
+        }
+    }
+    if let Some(s) = sess.or(shelved) {
+        if s.ticks() > 0 {
+            app.parking.park(key, s);
         }
     }
     app.live.fetch_sub(1, Ordering::Relaxed);
@@ -522,6 +571,7 @@ pub fn spawn(config: Config) -> Result<Handle, Error> {
         current: rx,
         sessions: AtomicU64::new(0),
         live: AtomicU64::new(0),
+        parking: Parking::default(),
     });
     let (stop_tx, stop_rx) = tokio::sync::oneshot::channel::<()>();
     let cfg = config.clone();

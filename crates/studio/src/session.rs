@@ -6,7 +6,8 @@
 //! trace. Step back re-simulates from the nearest snapshot of the state vector.
 
 use statecheck_ir::{Machine, Program};
-use statecheck_sim::{random::RandomInputs, scenario, tick_once, unreached, Stop};
+use statecheck_sim::lasso::run_lasso;
+use statecheck_sim::{random::RandomInputs, scenario, tick_once, unreached, Options, Stop};
 use std::sync::Arc;
 
 /// Most ticks a session keeps (its input history; stepping further is refused until a step
@@ -63,6 +64,27 @@ pub struct TickOut {
     pub stop: Option<Stop>,
 }
 
+/// A lasso scenario loaded in the session (a `.scn` with a `loop:` line, as `verify` writes
+/// for a violated temporal property): its ticks `0..end`, the loop `start..end` repeating
+/// forever. While `following`, stepping past the end continues around the loop.
+#[derive(Clone, Debug)]
+pub struct Lasso {
+    /// The loop's first tick.
+    pub start: usize,
+    /// The scenario's length in ticks (the loop is `start..end`).
+    pub end: usize,
+    /// The temporal property the lasso violates, as `statecheck sim` reports it
+    /// (`statecheck_sim::lasso::run_lasso`), if any.
+    pub violated: Option<Stop>,
+    /// Why the scenario is not a lasso of the model, if it is not.
+    pub broken: Option<String>,
+    /// False when the lasso is not fair (its temporal properties were not evaluated).
+    pub fair: bool,
+    /// True until the inputs are changed or the run branches before the loop's end: a step
+    /// then applies the loop's next input vector.
+    pub following: bool,
+}
+
 struct Snapshot {
     state: Vec<i64>,
     coverage: Vec<u64>,
@@ -85,6 +107,7 @@ pub struct Session {
     random: Option<(u64, u64)>,
     last_assume: usize,
     note: Option<String>,
+    lasso: Option<Lasso>,
 }
 
 impl Session {
@@ -112,6 +135,7 @@ impl Session {
             random: None,
             last_assume: 0,
             note: None,
+            lasso: None,
             program: loaded,
         }
     }
@@ -147,11 +171,21 @@ impl Session {
         &self.held
     }
 
-    /// Set a held input.
+    /// Set a held input. A changed value leaves a lasso's loop (the run branches).
     pub fn set_held(&mut self, input: usize, value: i64) {
         if let Some(h) = self.held.get_mut(input) {
+            if *h != value {
+                if let Some(l) = &mut self.lasso {
+                    l.following = false;
+                }
+            }
             *h = value;
         }
+    }
+
+    /// The lasso scenario loaded, if the last scenario was one.
+    pub fn lasso(&self) -> Option<&Lasso> {
+        self.lasso.as_ref()
     }
 
     /// Cumulative coverage counts (indexed like `Program::covers`).
@@ -170,17 +204,63 @@ impl Session {
     }
 
     /// The inputs so far as a scenario text (the `statecheck sim --scenario` format).
+    /// A followed lasso at its end, or after whole laps of its loop, is written with its
+    /// `loop:` line (the loop then spans the laps: the same infinite run).
     pub fn scenario_text(&self) -> String {
         let p = self.program();
-        scenario::format(&scenario::from_input_vectors(p, &self.history), p)
+        let len = self.history.len();
+        let sc = match &self.lasso {
+            Some(l)
+                if l.following
+                    && l.broken.is_none()
+                    && l.end > l.start
+                    && len >= l.end
+                    && (len - l.end).is_multiple_of(l.end - l.start) =>
+            {
+                scenario::from_lasso(p, &self.history, l.start)
+            }
+            _ => scenario::from_input_vectors(p, &self.history),
+        };
+        scenario::format(&sc, p)
+    }
+
+    /// The input vector of the next tick around a followed lasso's loop, if the run is at or
+    /// past the loop's end and follows it (a branch before the end leaves the loop).
+    fn loop_vector(&mut self) -> Option<Vec<i64>> {
+        let l = self.lasso.as_mut()?;
+        let len = self.history.len();
+        if !l.following || l.broken.is_some() || l.end <= l.start {
+            return None;
+        }
+        if len < l.end {
+            l.following = false;
+            return None;
+        }
+        let period = l.end - l.start;
+        self.history
+            .get(l.start + (len - l.start) % period)
+            .cloned()
     }
 
     /// Run `n` ticks with the held inputs, `pulse` (input index, value) applying to the first
     /// tick only. Discards the ticks a `back` undid. Stops early when the run stops.
     pub fn step(&mut self, n: u64, pulse: &[(usize, i64)]) -> Result<Vec<TickOut>, Error> {
         self.check_can_step()?;
+        if !pulse.is_empty() {
+            if let Some(l) = &mut self.lasso {
+                l.following = false;
+            }
+        }
         let mut out = Vec::new();
         for k in 0..n.min(MAX_BATCH) {
+            if let Some(v) = self.loop_vector() {
+                let going = self.push_tick(v.clone(), &mut out)?;
+                self.held_from(v);
+                if !going {
+                    break;
+                }
+                continue;
+            }
             let mut inputs = self.held.clone();
             if k == 0 {
                 for &(i, v) in pulse {
@@ -201,6 +281,9 @@ impl Session {
     /// than the last one starts a new stream. The held inputs follow the last random values.
     pub fn step_random(&mut self, n: u64, seed: u64) -> Result<Vec<TickOut>, Error> {
         self.check_can_step()?;
+        if let Some(l) = &mut self.lasso {
+            l.following = false;
+        }
         let batch = match self.random {
             Some((s, b)) if s == seed => b + 1,
             _ => 0,
@@ -386,7 +469,68 @@ impl Session {
         if let Some(last) = self.history.last() {
             self.held_from(last.clone());
         }
+        if let Some(k) = sc.loop_start {
+            // The verdict on the infinite run is `sim`'s: the same replay function.
+            let l = run_lasso(self.program(), &sc, Options::default());
+            let violated = match l.run.stop {
+                s @ Stop::Violation { .. } => Some(s),
+                _ => None,
+            };
+            self.lasso = Some(Lasso {
+                start: k,
+                end: sc.ticks.len(),
+                violated,
+                broken: l.broken,
+                fair: l.fair,
+                following: self.stop.is_none() && self.history.len() == sc.ticks.len(),
+            });
+        }
         Ok(out)
+    }
+
+    /// A session on `loaded` with this session's inputs so far re-applied (its saved scenario
+    /// replayed, so the run is the one `statecheck sim` gives for them on `loaded`), and the
+    /// records of the ticks re-run. On the same model the held inputs are kept too. When the
+    /// inputs do not apply (the model's inputs changed, or its `assume`s refuse them), the
+    /// new session starts at the initial state and the message says why.
+    pub fn reapply(
+        &self,
+        loaded: Arc<crate::load::Loaded>,
+    ) -> (Session, Vec<TickOut>, Option<String>) {
+        let mut fresh = Session::new(Arc::clone(&loaded));
+        if self.history.is_empty() {
+            if Arc::ptr_eq(&self.program, &loaded) {
+                fresh.held = self.held.clone();
+            }
+            return (fresh, Vec::new(), None);
+        }
+        let text = self.scenario_text();
+        let n = self.history.len();
+        match fresh.load_scenario(&text) {
+            Ok(ticks) => {
+                if Arc::ptr_eq(&self.program, &loaded) {
+                    fresh.held = self.held.clone();
+                    if let (Some(a), Some(b)) = (&mut fresh.lasso, &self.lasso) {
+                        a.following = b.following;
+                    }
+                }
+                let note = (ticks.len() < n).then(|| {
+                    format!(
+                        "{} of the {n} ticks so far re-applied: the run stops earlier now",
+                        ticks.len()
+                    )
+                });
+                (fresh, ticks, note)
+            }
+            Err(e) => (
+                Session::new(loaded),
+                Vec::new(),
+                Some(format!(
+                    "the {n} ticks so far do not apply to the model now ({}); the run starts again",
+                    e.message
+                )),
+            ),
+        }
     }
 
     fn held_from(&mut self, mut last: Vec<i64>) {

@@ -108,6 +108,14 @@ pub struct Aig {
     pub latch_names: Vec<Option<String>>,
     /// Names of bad outputs.
     pub bad_names: Vec<Option<String>>,
+    /// Justice properties (AIGER 1.9 `J`): each is violated by a run on which every one of its
+    /// literals, and every fairness literal, holds infinitely often.
+    pub justice: Vec<Vec<Lit>>,
+    /// Names of justice properties.
+    pub justice_names: Vec<Option<String>>,
+    /// Fairness constraints (AIGER 1.9 `F`): each holds infinitely often on the runs the
+    /// justice properties speak of.
+    pub fairness: Vec<Lit>,
     strash: HashMap<(Lit, Lit), Lit>,
 }
 
@@ -129,6 +137,9 @@ impl Aig {
             input_names: Vec::new(),
             latch_names: Vec::new(),
             bad_names: Vec::new(),
+            justice: Vec::new(),
+            justice_names: Vec::new(),
+            fairness: Vec::new(),
             strash: HashMap::new(),
         }
     }
@@ -263,14 +274,16 @@ pub fn lit_val(values: &[bool], l: Lit) -> bool {
 }
 
 impl Aig {
-    /// Variables in the cone of influence of the bad outputs and constraints (through latches'
-    /// next-state functions).
+    /// Variables in the cone of influence of the bad outputs, constraints, justice and
+    /// fairness literals (through latches' next-state functions).
     pub fn cone(&self) -> Vec<bool> {
         let mut seen = vec![false; self.nodes.len()];
         let mut stack: Vec<u32> = self
             .bad
             .iter()
             .chain(&self.constraints)
+            .chain(self.justice.iter().flatten())
+            .chain(&self.fairness)
             .map(|l| l.var())
             .collect();
         while let Some(v) = stack.pop() {
@@ -325,6 +338,13 @@ impl Aig {
         g.bad = self.bad.iter().map(|&l| m(l)).collect();
         g.constraints = self.constraints.iter().map(|&l| m(l)).collect();
         g.bad_names = self.bad_names.clone();
+        g.justice = self
+            .justice
+            .iter()
+            .map(|j| j.iter().map(|&l| m(l)).collect())
+            .collect();
+        g.justice_names = self.justice_names.clone();
+        g.fairness = self.fairness.iter().map(|&l| m(l)).collect();
         (g, kept)
     }
 }

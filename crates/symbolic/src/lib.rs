@@ -19,6 +19,7 @@ pub mod engine;
 mod error;
 pub mod ic3;
 pub mod kind;
+pub mod live;
 pub mod sat;
 pub mod scorr;
 pub mod ternary;

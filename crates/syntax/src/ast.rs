@@ -41,6 +41,19 @@ pub enum Item {
     /// `import "path.sc";` or `import "path.sc" { A, B };` — resolved before checking
     /// (`statecheck_model::imports`); the checker itself ignores it.
     Import(ImportDecl),
+    /// `interface Name { input x: T; output event e; … }` (`docs/components.md`).
+    Interface(InterfaceDecl),
+}
+
+/// `interface Name { member; … }`: the ports a chart that implements it must declare.
+#[derive(Clone, Debug, PartialEq)]
+pub struct InterfaceDecl {
+    /// The interface's name.
+    pub name: Ident,
+    /// Its ports: `input`/`output` variables and events (initial values are not allowed).
+    pub members: Vec<VarDecl>,
+    /// The whole declaration.
+    pub span: Span,
 }
 
 /// `import "path.sc" [ '{' IDENT { ',' IDENT } '}' ] ';'`
@@ -175,6 +188,11 @@ pub struct Chart {
     pub name: Ident,
     /// `plant`/`requirement`/`observer` and similar role keywords before `chart` (later issues).
     pub role: Option<Ident>,
+    /// Compile-time parameters, `chart Sensor(lo: int, hi: int = 5) { … }`; empty for a chart
+    /// without a parameter list. Instances give arguments; the model substitutes them.
+    pub params: Vec<ChartParam>,
+    /// `implements A, B`: the interfaces the chart declares it conforms to.
+    pub implements: Vec<Ident>,
     /// Variable and event declarations in textual order.
     pub vars: Vec<VarDecl>,
     /// The chart's top level, which is a state body without a name.
@@ -182,6 +200,19 @@ pub struct Chart {
     /// Properties stated inside the chart; they hold for every instance.
     pub properties: Vec<Property>,
     /// The whole chart.
+    pub span: Span,
+}
+
+/// A chart parameter `name: type [= default]`: a constant fixed by each instance.
+#[derive(Clone, Debug, PartialEq)]
+pub struct ChartParam {
+    /// The parameter's name.
+    pub name: Ident,
+    /// Its type: `int`, `int[lo..hi]`, `bool` or an enum.
+    pub ty: TypeExpr,
+    /// The value used when an instance gives no argument for it.
+    pub default: Option<Expr>,
+    /// The whole declaration.
     pub span: Span,
 }
 
@@ -569,7 +600,33 @@ pub struct System {
     pub observers: Vec<Chart>,
     /// State-based synthesis requirements: `requirement never (…);`, `requirement e needs (…);`.
     pub requirements: Vec<StateRequirement>,
+    /// `configuration NAME { inst = Chart(args); … }`: named choices of charts and arguments.
+    pub configurations: Vec<Configuration>,
     /// Whole system.
+    pub span: Span,
+}
+
+/// `configuration NAME { binding … }` inside a system (`docs/components.md`).
+#[derive(Clone, Debug, PartialEq)]
+pub struct Configuration {
+    /// The configuration's name.
+    pub name: Ident,
+    /// The instances it binds, in order.
+    pub bindings: Vec<Binding>,
+    /// Whole declaration.
+    pub span: Span,
+}
+
+/// `inst = Chart(args);` in a configuration: the chart (and arguments) an instance gets.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Binding {
+    /// The instance (or slot) bound.
+    pub instance: Ident,
+    /// The chart it gets.
+    pub chart: Ident,
+    /// The chart's arguments.
+    pub args: Vec<Arg>,
+    /// Whole binding.
     pub span: Span,
 }
 
@@ -605,7 +662,20 @@ pub struct Instance {
     pub count: Option<Expr>,
     /// The chart it instantiates.
     pub chart: Ident,
+    /// The arguments of a parameterised chart, `: Sensor(0, hi = 5)`, in order.
+    pub args: Vec<Arg>,
     /// Whole declaration.
+    pub span: Span,
+}
+
+/// One argument of an instance: positional (`5`) or named (`hi = 5`).
+#[derive(Clone, Debug, PartialEq)]
+pub struct Arg {
+    /// The parameter's name for a named argument.
+    pub name: Option<Ident>,
+    /// The value; must be a constant expression.
+    pub value: Expr,
+    /// The whole argument.
     pub span: Span,
 }
 

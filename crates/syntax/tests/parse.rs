@@ -50,6 +50,7 @@ fn item_spans_cover_their_text() {
                 Item::Tick(t) => t.span,
                 Item::Import(i) => i.span,
                 Item::Chart(c) => c.span,
+                Item::Interface(i) => i.span,
                 Item::System(s) => s.span,
             };
             &src[span.range()]

@@ -1,9 +1,10 @@
 //! Deciding one AIGER circuit (`statecheck verify FILE.aig`): one SAT engine, or IC3,
-//! k-induction and BMC side by side.
+//! k-induction and BMC side by side; justice properties by the liveness reductions.
 
 use statecheck_symbolic::aig::Aig;
 use statecheck_symbolic::check::{run_reduced, Engine, Reductions};
 use statecheck_symbolic::engine::{Limits, Outcome};
+use statecheck_symbolic::live::{check_justice, Justice, LiveOutcome, Method};
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::{mpsc, Arc};
 
@@ -40,6 +41,54 @@ pub fn race(g: &Aig, lim: &Limits) -> (Outcome, &'static str) {
         for (o, e) in rx.iter() {
             let def = matches!(o, Outcome::Reached(_) | Outcome::Proved(_));
             last = (o, e);
+            if def {
+                stop.store(true, Ordering::Relaxed);
+                break;
+            }
+        }
+        stop.store(true, Ordering::Relaxed);
+        last
+    })
+}
+
+/// Decide justice property `k` of an AIGER circuit (with its fairness constraints): one
+/// method, or liveness-to-safety with IC3 and with BMC and k-liveness side by side (`None`);
+/// the first definitive answer, with the method that gave it.
+pub fn race_justice(
+    g: &Aig,
+    k: usize,
+    method: Option<Method>,
+    lim: &Limits,
+) -> (LiveOutcome, &'static str) {
+    let j = Justice::from_aiger(g, k);
+    if let Some(m) = method {
+        return (check_justice(&j, m, lim), m.as_str());
+    }
+    let stop = Arc::new(AtomicBool::new(false));
+    let mut l = lim.clone();
+    l.stop = Some(Arc::clone(&stop));
+    let methods = [
+        Method::L2s(Engine::Ic3),
+        Method::L2s(Engine::Bmc),
+        Method::KLive,
+    ];
+    std::thread::scope(|s| {
+        let (tx, rx) = mpsc::channel();
+        for m in methods {
+            let tx = tx.clone();
+            let (l, j) = (l.clone(), &j);
+            s.spawn(move || {
+                let _ = tx.send((check_justice(j, m, &l), m.as_str()));
+            });
+        }
+        drop(tx);
+        let mut last = (LiveOutcome::Unknown("no engine answered".into()), "ic3");
+        for (o, m) in rx.iter() {
+            let def = matches!(o, LiveOutcome::Lasso { .. } | LiveOutcome::Proved);
+            // A bound reached is an answer only when no engine gives a definitive one.
+            if def || !matches!(last.0, LiveOutcome::Bounded(_)) {
+                last = (o, m);
+            }
             if def {
                 stop.store(true, Ordering::Relaxed);
                 break;

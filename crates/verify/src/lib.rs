@@ -13,12 +13,14 @@ mod portfolio;
 mod priority;
 mod schedule;
 mod single;
+mod temporal;
 
 pub use cancel::{Cancel, CancelReason};
-pub use circuit::{decide_circuit, race};
+pub use circuit::{decide_circuit, race, race_justice};
 pub use error::{Error, ErrorKind};
 pub use statecheck_explicit::{Options as ExplicitOptions, Progress, Report, Stats};
 pub use statecheck_ir::verdict::{PropKind, PropResult, Verdict};
+pub use temporal::row_names;
 
 use statecheck_ir::Program;
 use statecheck_symbolic::aig::Aig;
@@ -165,15 +167,16 @@ pub fn verify(
     opts: &Options,
     events: &(dyn Fn(Event) + Sync),
 ) -> Result<Run, Error> {
-    // Only the explicit engine decides temporal properties (`ltl`, `ctl`, `nonblocking`,
-    // unbounded `respond`, `deadlock_free`): on a system that has them, `auto` is the explicit
-    // engine alone, so that every property gets its verdict.
+    // Temporal rows (`ltl`, `ctl`, `nonblocking`, unbounded `respond`, `deadlock_free`) are
+    // raced between the explicit engine and the SAT engines' liveness checks, or decided by
+    // the one SAT engine asked for (`temporal.rs`).
     let (temporal, _) = statecheck_explicit::ltl::split(program, &opts.check.properties);
     let temporal = !program.temporal.is_empty() || !temporal.is_empty();
     let mut run = match (opts.engine, opts.engine.symbolic()) {
+        (Engine::Explicit, _) => single::run_explicit(program, opts, events),
+        _ if temporal => temporal::run(program, opts, events),
         (_, Some(e)) => single::run_engine(program, opts, e, events),
-        (Engine::Auto, None) if !temporal => portfolio::run_auto(program, opts, events),
-        _ => single::run_explicit(program, opts, events),
+        _ => portfolio::run_auto(program, opts, events),
     }?;
     // A run the memory watchdog stopped hit the memory limit, whatever engine noticed first.
     let by_memory = opts

@@ -1,5 +1,7 @@
 //! `statecheck export aiger`: one property of a system as an AIGER 1.9 file (bad-state output,
-//! invariant constraint, symbol table), for ABC and other hardware model checkers.
+//! invariant constraint, symbol table), for ABC and other hardware model checkers; an `ltl`
+//! property (or unbounded `respond`) as a justice property (the step in product with the
+//! Büchi automaton of its negation, the `fair` constraints among the justice literals).
 
 use crate::load;
 use anyhow::{bail, Result};
@@ -33,6 +35,9 @@ pub fn run(a: AigerArgs) -> Result<u8> {
     let loaded = load::load(&a.model, false)?;
     let sys = loaded.system(a.system.as_deref())?;
     let program = loaded.lower(sys)?;
+    if program.temporal.iter().any(|t| t.name == a.property) {
+        return justice(&a, &loaded.path, &program, binary);
+    }
     let (bl, idx) =
         statecheck_symbolic::check::problems(&program, std::slice::from_ref(&a.property))
             .map_err(|e| anyhow::anyhow!(e))?;
@@ -64,6 +69,51 @@ pub fn run(a: AigerArgs) -> Result<u8> {
         aig.inputs.len(),
         aig.latches.len(),
         aig.num_ands(),
+        aig.constraints.len()
+    );
+    Ok(0)
+}
+
+/// Write temporal property `a.property` as one AIGER justice property.
+fn justice(
+    a: &AigerArgs,
+    path: &str,
+    program: &statecheck_ir::Program,
+    binary: bool,
+) -> Result<u8> {
+    let bl = statecheck_symbolic::blast::blast(program);
+    let j = match statecheck_symbolic::live::justice_of(program, &bl, &a.property) {
+        Some(Ok(j)) => j,
+        Some(Err(why)) => bail!("`{}` cannot be exported to AIGER: {why}", a.property),
+        None => bail!("no property named `{}`", a.property),
+    };
+    let Some(aig) = j.to_aiger(&a.property) else {
+        bail!(
+            "`{}` cannot be exported to AIGER: the system has compassion constraints \
+             (`fair p => q`), which AIGER 1.9 cannot state",
+            a.property
+        );
+    };
+    let comment = format!(
+        "statecheck export of {path} system {} property {} (temporal)\n\
+         justice property 0: a run on which each of its literals holds infinitely often violates it\n\
+         one AIGER step = one tick; inputs after the model's choose the Büchi automaton's state; \
+         constraint = assumes hold, no run-time error, the automaton reads the position",
+        program.name, a.property
+    );
+    let bytes = if binary {
+        statecheck_symbolic::aiger::binary(&aig, &comment)
+    } else {
+        statecheck_symbolic::aiger::ascii(&aig, &comment)
+    };
+    crate::outpath::write(std::path::Path::new(&a.output), &bytes)?;
+    eprintln!(
+        "wrote {}: {} inputs, {} latches, {} AND gates, 1 justice property of {} literal(s), {} constraint(s)",
+        a.output,
+        aig.inputs.len(),
+        aig.latches.len(),
+        aig.num_ands(),
+        aig.justice.first().map_or(0, Vec::len),
         aig.constraints.len()
     );
     Ok(0)

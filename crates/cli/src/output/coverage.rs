@@ -29,7 +29,9 @@ fn tally(p: &Program, counts: &[u64], states: bool) -> Tally {
         total: 0,
     };
     for (c, n) in p.covers.iter().zip(counts) {
-        if matches!(c.kind, CoverKind::State(_)) == states {
+        // An observer's `error` state (and what leads only to it) is meant never to be
+        // covered: it is left out of the figures.
+        if matches!(c.kind, CoverKind::State(_)) == states && !c.expected_unreached {
             t.total += 1;
             t.covered += usize::from(*n > 0);
         }
@@ -59,7 +61,7 @@ pub fn summary(p: &Program, counts: &[u64], sources: &Sources) -> String {
         t.percent()
     );
     for (c, n) in p.covers.iter().zip(counts) {
-        if *n == 0 {
+        if *n == 0 && !c.expected_unreached {
             let (file, line, col) = place(sources, c.span.start);
             let root = sources.files.first().is_none_or(|f| f.name == file);
             let at = if root {
@@ -93,7 +95,7 @@ pub fn to_json(p: &Program, counts: &[u64], sources: &Sources) -> Value {
         .enumerate()
         .map(|(id, (c, n))| {
             let (file, line, col) = place(sources, c.span.start);
-            json!({"id": id, "instance": p.instances[c.instance as usize].name, "kind": kind_name(&c.kind), "label": c.label, "count": n, "file": file, "line": line, "col": col})
+            json!({"id": id, "instance": p.instances[c.instance as usize].name, "kind": kind_name(&c.kind), "label": c.label, "count": n, "file": file, "line": line, "col": col, "expected_unreached": c.expected_unreached})
         })
         .collect();
     json!({

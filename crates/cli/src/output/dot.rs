@@ -1,27 +1,28 @@
-//! Graphviz drawings of charts, optionally annotated with coverage counts.
+//! Graphviz drawings of charts, optionally annotated with coverage counts: triggers, guards
+//! and actions as written (`dot_text`), one line each; an observer's `error` state, meant
+//! never to be entered, is drawn with a double border and never as a coverage gap.
 
+use super::dot_text::{esc, label as lines, Written};
 use statecheck_ir::{CoverKind, Program};
-use statecheck_model::{Chart, Dest, Model, NodeKind, StateId, Trigger};
+use statecheck_model::{Chart, Dest, Model, NodeKind, StateId};
 use std::fmt::Write;
-
-fn esc(s: &str) -> String {
-    s.replace('\\', "\\\\").replace('"', "\\\"")
-}
 
 fn node_id(inst: usize, s: StateId) -> String {
     format!("i{inst}_s{s}")
 }
 
-/// Draw every instance of a program's system; `counts` annotates entries and firings.
-pub fn render(model: &Model, p: &Program, counts: Option<&[u64]>) -> String {
+/// Draw every instance of a program's system; `written` gives the transitions' text;
+/// `counts` annotates entries and firings.
+pub fn render(model: &Model, p: &Program, written: &Written, counts: Option<&[u64]>) -> String {
     let mut out = String::new();
     let _ = writeln!(out, "digraph \"{}\" {{\n  compound=true;\n  rankdir=LR;\n  node [shape=box, style=rounded, fontname=\"Helvetica\"];\n  edge [fontname=\"Helvetica\", fontsize=10];", esc(&p.name));
-    let count_of = |inst: usize, kind: &CoverKind| -> Option<u64> {
+    // The count of an item, and whether it is meant never to be covered.
+    let count_of = |inst: usize, kind: &CoverKind| -> Option<(u64, bool)> {
         let counts = counts?;
         p.covers
             .iter()
             .position(|c| c.instance as usize == inst && &c.kind == kind)
-            .map(|k| counts[k])
+            .map(|k| (counts[k], p.covers[k].expected_unreached))
     };
     for (i, inst) in p.instances.iter().enumerate() {
         let chart = &model.charts[inst.chart as usize];
@@ -35,34 +36,30 @@ pub fn render(model: &Model, p: &Program, counts: Option<&[u64]>) -> String {
         let _ = writeln!(out, "  }}");
         for (t, tr) in chart.transitions.iter().enumerate() {
             let n = count_of(i, &CoverKind::Transition(t as u32));
-            let mut label = String::new();
-            match &tr.trigger {
-                Trigger::None => {}
-                Trigger::Event(v) => label.push_str(&chart.vars[*v as usize].name),
-                Trigger::After(k) => label.push_str(&format!("after({k})")),
-            }
-            if tr.guard.is_some() {
-                label.push_str(" [..]");
+            let parts = written.parts(tr.span);
+            let mut first = parts.trigger.map(|t| written.text(t)).unwrap_or_default();
+            if let Some(g) = parts.guard {
+                first = format!("{first} [{}]", written.text(g));
             }
             if let Some(p) = tr.priority {
-                label = format!("{p}: {label}");
+                first = format!("{p}: {}", first.trim());
             }
-            if let Some(n) = n {
-                label.push_str(&format!(" ×{n}"));
+            let mut label = vec![first.trim().to_string()];
+            if let Some(a) = parts.action {
+                label.push(format!("/ {}", written.action(a)));
             }
-            let color = if n == Some(0) {
-                ", color=red, fontcolor=red"
-            } else {
-                ""
-            };
+            if let Some((n, _)) = n {
+                label.push(format!("×{n}"));
+            }
+            let color = gap_color(n);
             let src = anchor(chart, i, tr.source);
             let ltail = lcluster(chart, i, tr.source, "ltail");
             match &tr.dest {
                 Dest::Internal => {
                     let _ = writeln!(
                         out,
-                        "  {src} -> {src} [label=\"{} (internal)\", style=dashed{ltail}{color}];",
-                        esc(label.trim())
+                        "  {src} -> {src} [label=\"{}\", style=dashed{ltail}{color}];",
+                        lines(&[label, vec!["(internal)".to_string()]].concat())
                     );
                 }
                 Dest::State(d) => {
@@ -71,7 +68,7 @@ pub fn render(model: &Model, p: &Program, counts: Option<&[u64]>) -> String {
                         out,
                         "  {src} -> {} [label=\"{}\"{ltail}{lhead}{color}];",
                         anchor(chart, i, *d),
-                        esc(label.trim())
+                        lines(&label)
                     );
                 }
                 Dest::Choice(branches) => {
@@ -83,10 +80,17 @@ pub fn render(model: &Model, p: &Program, counts: Option<&[u64]>) -> String {
                     let _ = writeln!(
                         out,
                         "  {src} -> {cid} [label=\"{}\"{ltail}{color}];",
-                        esc(label.trim())
+                        lines(&label)
                     );
                     let mut k = 0;
-                    draw_branches(&mut out, chart, i, t, &cid, branches, &count_of, &mut k);
+                    let at = Branches {
+                        chart,
+                        i,
+                        t,
+                        written,
+                        count_of: &count_of,
+                    };
+                    draw_branches(&mut out, &at, &cid, branches, &mut k);
                 }
             }
         }
@@ -95,33 +99,51 @@ pub fn render(model: &Model, p: &Program, counts: Option<&[u64]>) -> String {
     out
 }
 
-#[allow(clippy::too_many_arguments)] // reason: recursive helper threading the drawing context
-fn draw_branches(
-    out: &mut String,
-    chart: &Chart,
+/// An item's count and whether it is meant never to be covered.
+type CountOf<'a> = dyn Fn(usize, &CoverKind) -> Option<(u64, bool)> + 'a;
+
+/// What drawing a transition's choice branches needs.
+struct Branches<'a> {
+    chart: &'a Chart,
     i: usize,
     t: usize,
+    written: &'a Written<'a>,
+    count_of: &'a CountOf<'a>,
+}
+
+/// Red for an item never covered, unless it is meant never to be.
+fn gap_color(n: Option<(u64, bool)>) -> &'static str {
+    if n == Some((0, false)) {
+        ", color=red, fontcolor=red"
+    } else {
+        ""
+    }
+}
+
+fn draw_branches(
+    out: &mut String,
+    at: &Branches,
     from: &str,
     branches: &[statecheck_model::Branch],
-    count_of: &dyn Fn(usize, &CoverKind) -> Option<u64>,
     k: &mut u32,
 ) {
+    let (chart, i) = (at.chart, at.i);
     for b in branches {
-        let n = count_of(i, &CoverKind::Branch(t as u32, *k));
+        let n = (at.count_of)(i, &CoverKind::Branch(at.t as u32, *k));
         *k += 1;
-        let mut label = if b.guard.is_some() {
-            "[..]".to_string()
-        } else {
-            "else".to_string()
-        };
-        if let Some(n) = n {
-            label.push_str(&format!(" ×{n}"));
+        let parts = at.written.parts(b.span);
+        let mut label = vec![match parts.guard {
+            Some(g) => format!("[{}]", at.written.text(g)),
+            None if b.guard.is_some() => "[..]".to_string(),
+            None => "else".to_string(),
+        }];
+        if let Some(a) = parts.action {
+            label.push(format!("/ {}", at.written.action(a)));
         }
-        let color = if n == Some(0) {
-            ", color=red, fontcolor=red"
-        } else {
-            ""
-        };
+        if let Some((n, _)) = n {
+            label.push(format!("×{n}"));
+        }
+        let color = gap_color(n);
         match &b.dest {
             Dest::State(d) => {
                 let lhead = lcluster(chart, i, *d, "lhead");
@@ -129,7 +151,7 @@ fn draw_branches(
                     out,
                     "  {from} -> {} [label=\"{}\"{lhead}{color}];",
                     anchor(chart, i, *d),
-                    esc(&label)
+                    lines(&label)
                 );
             }
             Dest::Choice(inner) => {
@@ -138,8 +160,12 @@ fn draw_branches(
                     out,
                     "  {cid} [shape=diamond, label=\"\", width=0.25, height=0.25];"
                 );
-                let _ = writeln!(out, "  {from} -> {cid} [label=\"{}\"{color}];", esc(&label));
-                draw_branches(out, chart, i, t, &cid, inner, count_of, k);
+                let _ = writeln!(
+                    out,
+                    "  {from} -> {cid} [label=\"{}\"{color}];",
+                    lines(&label)
+                );
+                draw_branches(out, at, &cid, inner, k);
             }
             Dest::Internal => {}
         }
@@ -172,7 +198,7 @@ fn draw_children(
     chart: &Chart,
     i: usize,
     s: StateId,
-    count_of: &dyn Fn(usize, &CoverKind) -> Option<u64>,
+    count_of: &CountOf,
     depth: usize,
 ) {
     let pad = "  ".repeat(depth);
@@ -200,31 +226,31 @@ fn draw_children(
     for k in kids {
         let node = &chart.states[k as usize];
         let n = count_of(i, &CoverKind::State(k));
-        let mut label = node.name.clone();
+        let mut name = node.name.clone();
         if let NodeKind::Or {
             history: Some(h), ..
         } = &node.kind
         {
-            label.push_str(match h {
+            name.push_str(match h {
                 statecheck_syntax::ast::HistoryKind::Shallow => " (H)",
                 statecheck_syntax::ast::HistoryKind::Deep => " (H*)",
             });
         }
-        if let Some(n) = n {
-            label.push_str(&format!("\\n×{n}"));
+        let mut label = vec![name];
+        if let Some((n, _)) = n {
+            label.push(format!("×{n}"));
         }
-        let color = if n == Some(0) {
-            ", color=red, fontcolor=red"
-        } else {
-            ""
-        };
+        let mut color = gap_color(n);
+        if chart.is_observer_error(k) {
+            color = ", peripheries=2";
+        }
         if is_composite(chart, k) {
             let style = if node.is_region { "dashed" } else { "rounded" };
             let _ = writeln!(
                 out,
                 "{pad}subgraph cluster_{} {{\n{pad}  label=\"{}\"; style={style}{};",
                 node_id(i, k),
-                esc(&label),
+                lines(&label),
                 color.replace(", ", "; ")
             );
             let _ = writeln!(
@@ -239,7 +265,7 @@ fn draw_children(
                 out,
                 "{pad}{} [label=\"{}\"{color}];",
                 node_id(i, k),
-                esc(&label)
+                lines(&label)
             );
         }
     }

@@ -4,6 +4,8 @@
 pub mod coverage;
 pub mod csv;
 pub mod dot;
+pub mod dot_text;
 pub mod json;
+pub mod svg;
 pub mod table;
 pub mod vcd;

@@ -1,19 +1,88 @@
-//! The terminal table: per tick, the active leaf states and what changed.
+//! The terminal table: per tick, the time (when the model declares its tick length), the
+//! active leaf states and what changed. Variables and events are the view's columns: a
+//! connected signal once, named by its connection (`a.out->b.in`), and only those chosen by
+//! `--show`. On a terminal, long rows wrap their changes under the changes column.
 
 use statecheck_ir::view::TraceView as Views;
 use statecheck_ir::Program;
 use statecheck_sim::TickRecord;
-use std::fmt::Write;
 
-/// Render a trace as a table of active states and changed variables per tick.
-pub fn render(p: &Program, views: &Views, trace: &[TickRecord]) -> String {
+/// Render a trace as a table of active states and changed variables per tick; `width`: the
+/// terminal's width to wrap long rows to (`None`: never wrap).
+pub fn render(p: &Program, views: &Views, trace: &[TickRecord], width: Option<usize>) -> String {
     let mut t = Stream::new(p, views, usize::MAX);
+    t.width = width;
     let mut out = String::new();
     for rec in trace {
         out.push_str(&t.tick(rec.tick, &rec.slots));
     }
     out.push_str(&t.finish());
     out
+}
+
+/// The width of the terminal standard output is, when it is one (`None` when the output is a
+/// pipe or a file: such output is never wrapped).
+pub fn terminal_width() -> Option<usize> {
+    use std::io::IsTerminal;
+    if !std::io::stdout().is_terminal() {
+        return None;
+    }
+    console::Term::stdout()
+        .size_checked()
+        .map(|(_, cols)| usize::from(cols))
+        .filter(|w| *w > 0)
+}
+
+/// Apply `--show` patterns to a view: an error (a usage error) names a pattern that matches
+/// no variable or event.
+pub fn show(views: &mut Views, patterns: &[String]) -> anyhow::Result<()> {
+    if patterns.is_empty() {
+        return Ok(());
+    }
+    let unmatched = views.select(patterns);
+    if let Some(u) = unmatched.first() {
+        let mut names: Vec<&str> = views
+            .vars
+            .iter()
+            .map(|v| v.name.as_str())
+            .chain(views.events.iter().map(|(n, _)| n.as_str()))
+            .take(8)
+            .collect();
+        if views.vars.len() + views.events.len() > 8 {
+            names.push("…");
+        }
+        anyhow::bail!(
+            "--show `{u}` matches no variable or event (they are named `instance.name`: {})",
+            names.join(", ")
+        );
+    }
+    Ok(())
+}
+
+/// One row: tick, time (empty without a declared tick length), active states, changes.
+type Row = (String, String, String, String);
+
+/// The time at the end of `tick` with ticks of `ms` milliseconds, in seconds with as many
+/// decimals as the tick length needs (`3.1` for tick 31 of 100 ms; `62.5` for 250 ms).
+pub fn time(tick: u64, ms: i64) -> String {
+    let total = i128::from(tick) * i128::from(ms);
+    let decimals = if ms % 1000 == 0 {
+        0
+    } else if ms % 100 == 0 {
+        1
+    } else if ms % 10 == 0 {
+        2
+    } else {
+        3
+    };
+    let whole = total / 1000;
+    let frac = (total % 1000).abs();
+    match decimals {
+        0 => whole.to_string(),
+        1 => format!("{whole}.{}", frac / 100),
+        2 => format!("{whole}.{:02}", frac / 10),
+        _ => format!("{whole}.{frac:03}"),
+    }
 }
 
 /// Ticks a streamed table holds back to size its columns: a trace of up to this many ticks
@@ -26,9 +95,11 @@ pub struct Stream<'a> {
     p: &'a Program,
     views: &'a Views,
     prev: Option<Vec<i64>>,
-    held: Vec<(String, String, String)>,
+    held: Vec<Row>,
     hold: usize,
-    widths: Option<(usize, usize)>,
+    widths: Option<(usize, usize, usize)>,
+    /// The terminal's width: changes past it wrap onto continuation lines (`None`: never).
+    pub width: Option<usize>,
 }
 
 impl<'a> Stream<'a> {
@@ -41,6 +112,7 @@ impl<'a> Stream<'a> {
             held: Vec::new(),
             hold,
             widths: None,
+            width: None,
         }
     }
 
@@ -58,11 +130,18 @@ impl<'a> Stream<'a> {
             })
             .collect();
         let mut changes: Vec<String> = views
-            .present_events(slots)
-            .into_iter()
-            .map(|e| format!("{}!", short(views, &e)))
+            .event_columns
+            .iter()
+            .filter(|c| {
+                views
+                    .events
+                    .get(c.index)
+                    .is_some_and(|(_, s)| slots.get(*s as usize).is_some_and(|v| *v != 0))
+            })
+            .map(|c| format!("{}!", short(views, &c.name)))
             .collect();
-        for v in &views.vars {
+        for c in &views.var_columns {
+            let v = &views.vars[c.index];
             let now = slots[v.slot as usize];
             if self
                 .prev
@@ -71,7 +150,7 @@ impl<'a> Stream<'a> {
             {
                 changes.push(format!(
                     "{}={}",
-                    short(views, &v.name),
+                    short(views, &c.name),
                     v.display.format(now)
                 ));
             }
@@ -80,7 +159,8 @@ impl<'a> Stream<'a> {
             Some(pv) => pv.copy_from_slice(slots),
             None => self.prev = Some(slots.to_vec()),
         }
-        let row = (tick.to_string(), active.join("; "), changes.join(" "));
+        let time = views.tick_ms.map(|ms| time(tick, ms)).unwrap_or_default();
+        let row = (tick.to_string(), time, active.join("; "), changes.join(" "));
         if self.widths.is_none() {
             self.held.push(row);
             if self.held.len() < self.hold {
@@ -104,25 +184,68 @@ impl<'a> Stream<'a> {
     fn flush(&mut self) -> String {
         let rows = std::mem::take(&mut self.held);
         let w0 = rows.iter().map(|r| r.0.len()).max().unwrap_or(0).max(4);
+        let wt = if self.views.tick_ms.is_some() {
+            rows.iter().map(|r| r.1.len()).max().unwrap_or(0).max(8)
+        } else {
+            0
+        };
         let w1 = rows
             .iter()
-            .map(|r| r.1.chars().count())
+            .map(|r| r.2.chars().count())
             .max()
             .unwrap_or(0)
             .clamp(6, 60);
-        self.widths = Some((w0, w1));
+        self.widths = Some((w0, wt, w1));
         let mut out = String::new();
-        let _ = writeln!(out, "{:>w0$}  {:<w1$}  changes", "tick", "active");
+        let head = (
+            "tick".to_string(),
+            "time (s)".to_string(),
+            "active".to_string(),
+            "changes".to_string(),
+        );
+        out.push_str(&self.line(&head));
         for r in &rows {
             out.push_str(&self.line(r));
         }
         out
     }
 
-    fn line(&self, (t, a, c): &(String, String, String)) -> String {
-        let (w0, w1) = self.widths.unwrap_or((4, 6));
-        let line = format!("{t:>w0$}  {a:<w1$}  {c}");
-        format!("{}\n", line.trim_end())
+    fn line(&self, (t, time, a, c): &Row) -> String {
+        let (w0, wt, w1) = self.widths.unwrap_or((4, 0, 6));
+        let lead = if wt > 0 {
+            format!("{t:>w0$}  {time:>wt$}  {a:<w1$}  ")
+        } else {
+            format!("{t:>w0$}  {a:<w1$}  ")
+        };
+        let indent = lead.chars().count();
+        // The changes wrap at the terminal's width, word by word, under their column (at
+        // least 20 characters of them per line).
+        let room = self.width.map(|w| w.saturating_sub(indent).max(20));
+        let mut lines = vec![lead];
+        let mut used = 0;
+        for word in c.split(' ').filter(|w| !w.is_empty()) {
+            let n = word.chars().count();
+            if let Some(room) = room {
+                if used > 0 && used + 1 + n > room {
+                    lines.push(" ".repeat(indent));
+                    used = 0;
+                }
+            }
+            if let Some(last) = lines.last_mut() {
+                if used > 0 {
+                    last.push(' ');
+                    used += 1;
+                }
+                last.push_str(word);
+                used += n;
+            }
+        }
+        let mut out = String::new();
+        for l in lines {
+            out.push_str(l.trim_end());
+            out.push('\n');
+        }
+        out
     }
 }
 
@@ -144,11 +267,93 @@ pub fn state_line(p: &Program, views: &Views, slots: &[i64]) -> String {
     parts.join(", ")
 }
 
-/// Drop the instance prefix when there is only one instance.
-fn short<'a>(views: &Views, name: &'a str) -> &'a str {
-    if views.instances.len() == 1 {
-        name.split_once('.').map_or(name, |(_, v)| v)
-    } else {
-        name
+/// Drop the instance prefix when there is only one instance (from every name of a
+/// connection's column: `w.o->w.i` is `o->i`).
+fn short(views: &Views, name: &str) -> String {
+    match views.instances.as_slice() {
+        [only] => {
+            let prefix = format!("{}.", only.name);
+            name.split("->")
+                .map(|side| {
+                    side.split(',')
+                        .map(|n| n.strip_prefix(&prefix).unwrap_or(n))
+                        .collect::<Vec<_>>()
+                        .join(",")
+                })
+                .collect::<Vec<_>>()
+                .join("->")
+        }
+        _ => name.to_string(),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use statecheck_sim::{scenario, Options, ScenarioInputs};
+
+    /// A chart whose changes are long: four variables written in tick 1.
+    const MODEL: &str = "chart W {
+  input event go;
+  output alpha_value: int[0..9] = 0;
+  output beta_value: int[0..9] = 0;
+  output gamma_value: int[0..9] = 0;
+  output delta_value: int[0..9] = 0;
+  initial A;
+  state A { on go / { alpha_value = 1; beta_value = 2; gamma_value = 3; delta_value = 4; } -> B; }
+  state B;
+}";
+
+    fn table(width: Option<usize>) -> String {
+        let (file, d) = statecheck_syntax::parse(MODEL);
+        assert!(d.is_empty(), "{d:?}");
+        let (model, d) = statecheck_model::check(&file);
+        assert!(!d.iter().any(|d| d.is_error()), "{d:?}");
+        let p = statecheck_ir::lower(&model, &model.systems[0]).expect("lowers");
+        let views = Views::new(&model, &p);
+        let sc = scenario::parse("-\ngo\n", &p).expect("scenario");
+        let run = statecheck_sim::run(
+            &p,
+            &mut ScenarioInputs::new(&sc),
+            Options {
+                coverage: false,
+                no_trace: false,
+                keep_going: false,
+            },
+        );
+        render(&p, &views, &run.trace, width)
+    }
+
+    #[test]
+    fn long_changes_wrap_under_their_column_on_a_narrow_terminal() {
+        // The lead is "tick" (4) + 2 + "active" (6) + 2 = 14 characters; at width 40 the
+        // changes get 26 per line: `go! alpha_value=1` (17) + ` beta_value=2` (13) would be
+        // 30, so each change after the first pair goes on its own line.
+        let want = "\
+tick  active  changes
+   0  A       alpha_value=0 beta_value=0
+              gamma_value=0
+              delta_value=0
+   1  B       go! alpha_value=1
+              beta_value=2 gamma_value=3
+              delta_value=4
+";
+        assert_eq!(table(Some(40)), want);
+        // Not on a terminal (no width): one line per tick, however long.
+        let flat = "\
+tick  active  changes
+   0  A       alpha_value=0 beta_value=0 gamma_value=0 delta_value=0
+   1  B       go! alpha_value=1 beta_value=2 gamma_value=3 delta_value=4
+";
+        assert_eq!(table(None), flat);
+    }
+
+    #[test]
+    fn time_is_printed_with_the_decimals_the_tick_needs() {
+        assert_eq!(time(31, 100), "3.1");
+        assert_eq!(time(250, 250), "62.50");
+        assert_eq!(time(3, 1000), "3");
+        assert_eq!(time(7, 5), "0.035");
+        assert_eq!(time(0, 100), "0.0");
     }
 }

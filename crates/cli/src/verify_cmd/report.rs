@@ -9,6 +9,7 @@ use statecheck_base::LineIndex;
 use statecheck_explicit::{human_bytes, InputSpace, Options, PropResult, Report, Stats, Verdict};
 use statecheck_ir::view::TraceView as Views;
 use statecheck_ir::{CoverKind, Program};
+use statecheck_model::imports::Sources;
 use std::fmt::Write;
 
 /// Above this many input vectors per tick, suggest `assume`s even when the run goes ahead.
@@ -43,7 +44,13 @@ fn num(v: u128) -> Value {
 pub use statecheck_verify::Meta;
 
 /// The JSON object of `statecheck verify --json`.
-pub fn json(p: &Program, source: &str, rep: &Report, cexs: &[Option<Cex>], meta: &[Meta]) -> Value {
+pub fn json(
+    p: &Program,
+    source: &Sources,
+    rep: &Report,
+    cexs: &[Option<Cex>],
+    meta: &[Meta],
+) -> Value {
     let results: Vec<Value> = rep
         .results
         .iter()
@@ -106,7 +113,7 @@ pub fn result_json(
 }
 
 /// The `stats` object of `--json` (and the last line of `--json-lines`).
-pub fn stats_json(p: &Program, source: &str, s: &Stats) -> Value {
+pub fn stats_json(p: &Program, source: &Sources, s: &Stats) -> Value {
     let dead = s.dead.as_ref().map(|d| dead_json(p, source, d));
     json!({
         "states": s.states,
@@ -132,15 +139,30 @@ pub fn stats_json(p: &Program, source: &str, s: &Stats) -> Value {
     })
 }
 
-fn dead_json(p: &Program, source: &str, dead: &[u32]) -> Value {
-    let idx = LineIndex::new(source);
+/// The dead items, each with the file it is in and its line and column in that file.
+fn dead_json(p: &Program, sources: &Sources, dead: &[u32]) -> Value {
     dead.iter()
         .filter_map(|&c| p.covers.get(c as usize))
+        .filter(|c| !c.expected_unreached)
         .map(|c| {
-            let (line, col) = idx.line_col(c.span.start);
-            json!({"instance": p.instances[c.instance as usize].name, "kind": cover_kind(&c.kind), "label": c.label, "line": line, "col": col})
+            let (file, line, col) = file_line_col(sources, c.span.start);
+            json!({"instance": p.instances[c.instance as usize].name, "kind": cover_kind(&c.kind), "label": c.label, "file": file, "line": line, "col": col})
         })
         .collect()
+}
+
+/// The file containing a byte offset of the merged text, and the 1-based line and column in it.
+fn file_line_col(sources: &Sources, offset: u32) -> (String, usize, usize) {
+    match sources.locate(offset as usize) {
+        Some((f, at)) => {
+            let (l, c) = LineIndex::new(sources.file_text(f)).line_col(at as u32);
+            (f.name.clone(), l, c)
+        }
+        None => {
+            let (l, c) = LineIndex::new(&sources.text).line_col(offset);
+            (String::new(), l, c)
+        }
+    }
 }
 
 fn cover_kind(k: &CoverKind) -> &'static str {
@@ -230,7 +252,7 @@ impl Columns {
 
 /// What follows the verdict table in the human-readable report: statistics, dead design
 /// and counterexample tables (nothing under `--quiet`). `explicit`: the explicit engine ran
-/// alone (its statistics are shown).
+/// alone (its statistics are shown). `show`: the `--show` patterns choosing the columns.
 pub fn tail(
     loaded: &Loaded,
     p: &Program,
@@ -238,6 +260,7 @@ pub fn tail(
     cexs: &[Option<Cex>],
     quiet: bool,
     explicit: bool,
+    show: &[String],
 ) -> String {
     let mut out = String::new();
     if quiet {
@@ -246,7 +269,16 @@ pub fn tail(
     if explicit {
         explicit_stats(&mut out, loaded, p, &rep.stats);
     }
-    let views = Views::new(&loaded.model, p);
+    let mut views = Views::new(&loaded.model, p);
+    // The patterns were checked before the run (`table::show`).
+    let _unmatched = views.select(show);
+    let width = table::terminal_width();
+    // A configuration's system is `System:configuration` (docs/components.md).
+    let config = p
+        .name
+        .split_once(statecheck_model::components::CONFIG_SEP)
+        .map(|(_, c)| format!(" in configuration `{c}`"))
+        .unwrap_or_default();
     for (r, c) in rep.results.iter().zip(cexs) {
         let what = if r.verdict == Verdict::Reachable {
             "witness"
@@ -261,13 +293,13 @@ pub fn tail(
                 };
                 let _ = writeln!(
                     out,
-                    "\n{what} for `{}` ({}, {} ticks, decided at tick {}){at}",
+                    "\n{what} for `{}`{config} ({}, {} ticks, decided at tick {}){at}",
                     r.name,
                     r.kind.as_str(),
                     r.depth,
                     c.tick
                 );
-                out.push_str(&table::render(p, &views, &c.trace));
+                out.push_str(&table::render(p, &views, &c.trace, width));
                 if let Some(e) = &r.error {
                     let _ = writeln!(
                         out,
@@ -308,12 +340,11 @@ fn explicit_stats(out: &mut String, loaded: &Loaded, p: &Program, s: &Stats) {
         );
     }
     if let Some(dead) = &s.dead {
-        let idx = LineIndex::new(&loaded.source);
         for &c in dead {
-            let Some(c) = p.covers.get(c as usize) else {
+            let Some(c) = p.covers.get(c as usize).filter(|c| !c.expected_unreached) else {
                 continue;
             };
-            let (line, col) = idx.line_col(c.span.start);
+            let (file, line, col) = file_line_col(&loaded.sources, c.span.start);
             let what = if matches!(c.kind, CoverKind::State(_)) {
                 "state never entered"
             } else {
@@ -321,8 +352,8 @@ fn explicit_stats(out: &mut String, loaded: &Loaded, p: &Program, s: &Stats) {
             };
             let _ = writeln!(
                 out,
-                "warning: dead design: {what}: {}: {} ({}:{line}:{col})",
-                p.instances[c.instance as usize].name, c.label, loaded.path
+                "warning: dead design: {what}: {}: {} ({file}:{line}:{col})",
+                p.instances[c.instance as usize].name, c.label
             );
         }
     }

@@ -114,13 +114,18 @@ pub fn model_problem(p: &Program, names: &[String]) -> Result<(Aig, String)> {
 /// Names of an AIGER file's properties (`b0`, `b1`, ... unless the symbol table names them).
 /// The bad outputs' names as shown and selected: the file's symbols with control characters
 /// escaped (a symbol is external text and must not drive the terminal), else `bN`.
+/// Justice properties follow, named by their symbols or `jN`.
 fn aiger_names(aig: &Aig) -> Vec<String> {
-    (0..aig.bad.len())
-        .map(|i| match aig.bad_names.get(i).cloned().flatten() {
+    let bad = (0..aig.bad.len()).map(|i| match aig.bad_names.get(i).cloned().flatten() {
+        Some(n) => crate::diag::escape_controls(&n).into_owned(),
+        None => format!("b{i}"),
+    });
+    let justice =
+        (0..aig.justice.len()).map(|i| match aig.justice_names.get(i).cloned().flatten() {
             Some(n) => crate::diag::escape_controls(&n).into_owned(),
-            None => format!("b{i}"),
-        })
-        .collect()
+            None => format!("j{i}"),
+        });
+    bad.chain(justice).collect()
 }
 
 /// Read an AIGER file.
@@ -182,6 +187,12 @@ pub fn run_aiger(a: &AigerRun) -> Result<u8> {
         let [i] = chosen.as_slice() else {
             bail!("--check-certificate needs exactly one property: choose it with --property");
         };
+        if *i >= aig.bad.len() {
+            bail!(
+                "`{}` is a justice property: certificates are for bad-state properties",
+                names[*i]
+            );
+        }
         return check_certificate(&single(&aig, *i), &names[*i], cf);
     }
     let engine = a.engine.symbolic().unwrap_or(Engine::Ic3);
@@ -189,6 +200,15 @@ pub fn run_aiger(a: &AigerRun) -> Result<u8> {
     let mut invariants = Vec::new();
     let mut code = 0u8;
     for &i in &chosen {
+        if i >= aig.bad.len() {
+            rows.push(justice_row(&aig, i - aig.bad.len(), &names[i], a));
+            code = match rows.last().map(|r| r.1) {
+                Some("violated") => 1,
+                Some("unknown") if code == 0 => 3,
+                _ => code,
+            };
+            continue;
+        }
         let g = single(&aig, i);
         let lim = limits(a.timeout, a.depth);
         let t = Instant::now();
@@ -214,7 +234,7 @@ pub fn run_aiger(a: &AigerRun) -> Result<u8> {
             "unknown" if code == 0 => 3,
             _ => code,
         };
-        rows.push((names[i].clone(), verdict, out.1, depth, time, reason));
+        rows.push((names[i].clone(), verdict, out.1, depth, time, reason, "bad"));
     }
     if let Some(cf) = a.certificate {
         match invariants.as_slice() {
@@ -233,8 +253,8 @@ pub fn run_aiger(a: &AigerRun) -> Result<u8> {
     if a.json {
         let results: Vec<serde_json::Value> = rows
             .iter()
-            .map(|(n, v, e, d, t, r)| {
-                let mut o = serde_json::json!({"property": n, "kind": "bad", "verdict": v,
+            .map(|(n, v, e, d, t, r, kind)| {
+                let mut o = serde_json::json!({"property": n, "kind": kind, "verdict": v,
                     "engine": e, "depth": d, "time_s": t, "counterexample": null});
                 if let Some(r) = r {
                     o["reason"] = serde_json::json!(r);
@@ -251,7 +271,7 @@ pub fn run_aiger(a: &AigerRun) -> Result<u8> {
             "{:<w$}  {:<9}  {:<6}  {:>5}  time\n",
             "property", "verdict", "engine", "depth"
         );
-        for (n, v, e, d, t, r) in &rows {
+        for (n, v, e, d, t, r, _) in &rows {
             out.push_str(&format!(
                 "{n:<w$}  {v:<9}  {e:<6}  {d:>5}  {t:.3} s{}\n",
                 r.as_ref().map(|x| format!("  ({x})")).unwrap_or_default()
@@ -260,4 +280,46 @@ pub fn run_aiger(a: &AigerRun) -> Result<u8> {
         crate::write_out(None, &out)?;
     }
     Ok(code)
+}
+
+/// One row of `verify FILE.aig`: property, verdict, engine, depth, seconds, reason, kind.
+type Row = (
+    String,
+    &'static str,
+    &'static str,
+    usize,
+    f64,
+    Option<String>,
+    &'static str,
+);
+
+/// The row of justice property `k`: a lasso violates it (depth: its frames), a proof of no
+/// fair run proves it.
+fn justice_row(aig: &Aig, k: usize, name: &str, a: &AigerRun) -> Row {
+    use statecheck_symbolic::live::{LiveOutcome, Method};
+    let method = match a.engine {
+        EngineArg::Auto | EngineArg::Explicit => None,
+        EngineArg::Ic3 => Some(Method::L2s(Engine::Ic3)),
+        EngineArg::Kind => Some(Method::L2s(Engine::Kind)),
+        EngineArg::Bmc => Some(Method::L2s(Engine::Bmc)),
+    };
+    let lim = limits(a.timeout, a.depth);
+    let t = Instant::now();
+    let (out, engine) = statecheck_verify::race_justice(aig, k, method, &lim);
+    let time = t.elapsed().as_secs_f64();
+    let (verdict, depth, reason) = match out {
+        LiveOutcome::Lasso { trace, .. } => ("violated", trace.inputs.len(), None),
+        LiveOutcome::Proved => ("proved", 0, None),
+        LiveOutcome::Bounded(d) => ("bounded", d, None),
+        LiveOutcome::Unknown(why) => ("unknown", 0, Some(why)),
+    };
+    (
+        name.to_string(),
+        verdict,
+        engine,
+        depth,
+        time,
+        reason,
+        "justice",
+    )
 }

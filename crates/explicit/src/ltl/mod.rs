@@ -7,7 +7,8 @@
 //! SCC-based, [`scc`]); a cycle is a counterexample lasso. CTL properties are evaluated by
 //! fixpoints on the same graph ([`ctl`]), with fair `EG` under fairness.
 
-pub mod buchi;
+/// The translation lives in the IR, shared with the SAT engines' monitors.
+pub use statecheck_ir::temporal::buchi;
 pub mod ctl;
 pub mod graph;
 pub mod product;

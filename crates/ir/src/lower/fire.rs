@@ -160,6 +160,7 @@ impl Lowerer<'_> {
             kind: CoverKind::Transition(t),
             label,
             span: tr.span,
+            expected_unreached: leads_only_to_observer_error(chart, &tr.dest),
         });
         let cover = self.covers.len() as CoverId - 1;
         let action = self.stmts(&tr.action, ctx);
@@ -209,6 +210,7 @@ impl Lowerer<'_> {
                             index + 1
                         ),
                         span: b.span,
+                        expected_unreached: leads_only_to_observer_error(chart, &b.dest),
                     });
                     let cover = self.covers.len() as CoverId - 1;
                     let g = b.guard.as_ref().map(|g| self.expr(g, Some(ctx)));
@@ -301,5 +303,17 @@ fn transition_label(chart: &Chart, tr: &m::Transition) -> String {
         Dest::Internal => format!("{src} (internal)"),
         Dest::State(t) => format!("{src} -> {}", chart.states[*t as usize].path),
         Dest::Choice(_) => format!("{src} -> (choice)"),
+    }
+}
+
+/// True when every state `d` may lead to is an observer's `error` state (such a transition
+/// fires only when the observer's property is violated).
+fn leads_only_to_observer_error(chart: &statecheck_model::Chart, d: &Dest) -> bool {
+    match d {
+        Dest::Internal => false,
+        Dest::State(s) => chart.is_observer_error(*s),
+        Dest::Choice(branches) => branches
+            .iter()
+            .all(|b| leads_only_to_observer_error(chart, &b.dest)),
     }
 }

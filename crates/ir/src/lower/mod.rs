@@ -179,6 +179,7 @@ impl<'m> Lowerer<'m> {
                     kind: CoverKind::State(s as StateId),
                     label: node.path.clone(),
                     span: node.span,
+                    expected_unreached: chart.is_observer_error(s as StateId),
                 });
                 self.state_covers
                     .insert((i, s as StateId), self.covers.len() as CoverId - 1);
@@ -235,7 +236,7 @@ impl<'m> Lowerer<'m> {
             fairness,
             started,
             n_locals: self.locals.len(),
-            code: std::sync::OnceLock::new(),
+            run_cache: Default::default(),
         }
     }
 

@@ -20,7 +20,11 @@
 //!   fair ones: justice `fair N: e;` (e holds at infinitely many positions) and compassion
 //!   `fair N: p => q;` (if p holds infinitely often, so does q). Path quantifiers of CTL range
 //!   over fair runs.
+//! - [`buchi`] translates an LTL formula (the negation of a property) into the one generalised
+//!   Büchi automaton every engine uses: the explicit engine's product and the SAT engines'
+//!   monitor circuit read the same states, labels and acceptance sets.
 
+pub mod buchi;
 mod lasso;
 mod lower;
 

@@ -59,6 +59,18 @@ pub(crate) use run::run;
 use crate::program::*;
 use std::collections::HashMap;
 
+impl Program {
+    /// The compiled form the interpreter runs, built once and kept in the program's
+    /// [`RunCache`].
+    pub(crate) fn code(&self) -> &Code {
+        match self.run_cache.get_or_init(|| Code::compile(self)) {
+            Some(code) => code,
+            // `code` is the only function that fills the cache, always with a `Code`.
+            None => unreachable!("the run cache holds the program's `Code`"),
+        }
+    }
+}
+
 /// A compiled expression: run from `start` to its `End`, result in `reg`.
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct Segment {

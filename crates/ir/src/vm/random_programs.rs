@@ -373,6 +373,7 @@ fn random_program(seed: u64) -> Program {
             kind: CoverKind::State(k),
             label: format!("cover {k}"),
             span: Span::default(),
+            expected_unreached: false,
         })
         .collect();
     Program {
@@ -393,7 +394,7 @@ fn random_program(seed: u64) -> Program {
         fairness: Vec::new(),
         started: 0,
         n_locals: g.n_locals as usize,
-        code: std::sync::OnceLock::new(),
+        run_cache: Default::default(),
     }
 }
 

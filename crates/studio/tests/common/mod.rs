@@ -21,9 +21,14 @@ pub fn repo(path: &str) -> String {
 
 /// A studio for `model` on 127.0.0.1, any free port.
 pub fn start(model: &str) -> Handle {
+    start_system(model, None)
+}
+
+/// A studio for one system of `model`.
+pub fn start_system(model: &str, system: Option<&str>) -> Handle {
     spawn(Config {
         path: model.to_string(),
-        system: None,
+        system: system.map(str::to_string),
         bind: "127.0.0.1".parse().expect("address"),
         port: 0,
         token: Some(TOKEN.into()),

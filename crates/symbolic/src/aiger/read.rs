@@ -118,10 +118,10 @@ pub fn parse(bytes: &[u8]) -> Result<Aig, AigerError> {
         at: "line 1".into(),
         message: msg,
     };
-    if nj > 0 || nf > 0 {
-        return Err(herr(
-            "justice and fairness properties (liveness) are not supported".into(),
-        ));
+    if nj.max(nf) > bytes.len() as u64 {
+        return Err(herr(format!(
+            "{nj} justice and {nf} fairness properties are more than the file can define"
+        )));
     }
     if m > u64::from(u32::MAX >> 2) {
         return Err(herr(format!("too many variables ({m})")));
@@ -228,6 +228,31 @@ pub fn parse(bytes: &[u8]) -> Result<Aig, AigerError> {
             check_lit(&c, v)?
         });
     }
+    let mut justice_sizes = Vec::new();
+    for _ in 0..nj {
+        let n = c.numbers(1, 1, "the size of a justice property")?[0];
+        // Each literal takes a line of the file.
+        if n > bytes.len() as u64 {
+            return Err(c.err(format!(
+                "a justice property of {n} literals is larger than the file"
+            )));
+        }
+        justice_sizes.push(n);
+    }
+    let mut justice_raw = Vec::new();
+    for &n in &justice_sizes {
+        let mut j = Vec::new();
+        for _ in 0..n {
+            let v = c.numbers(1, 1, "a justice literal")?[0];
+            j.push(check_lit(&c, v)?);
+        }
+        justice_raw.push(j);
+    }
+    let mut fair_raw = Vec::new();
+    for _ in 0..nf {
+        let v = c.numbers(1, 1, "a fairness literal")?[0];
+        fair_raw.push(check_lit(&c, v)?);
+    }
     for i in 0..na {
         if binary {
             let lhs = 2 * (ni + nl + i + 1);
@@ -254,6 +279,7 @@ pub fn parse(bytes: &[u8]) -> Result<Aig, AigerError> {
     let mut names_i = vec![None; ni as usize];
     let mut names_l = vec![None; nl as usize];
     let mut names_b = vec![None; nb as usize];
+    let mut names_j = vec![None; nj as usize];
     for line in rest.split(|&x| x == b'\n') {
         let Ok(t) = std::str::from_utf8(line) else {
             break;
@@ -272,6 +298,7 @@ pub fn parse(bytes: &[u8]) -> Result<Aig, AigerError> {
             "i" => names_i.get_mut(idx),
             "l" => names_l.get_mut(idx),
             "b" => names_b.get_mut(idx),
+            "j" => names_j.get_mut(idx),
             _ => None,
         };
         if let Some(s) = slot {
@@ -325,7 +352,8 @@ pub fn parse(bytes: &[u8]) -> Result<Aig, AigerError> {
         g.set_next(i, x);
     }
     let mut bad = Vec::new();
-    let source = if nb > 0 { &bads } else { &outs };
+    // Outputs are the properties of AIGER 1.0 files only (no bad and no justice section).
+    let source = if nb > 0 || nj > 0 { &bads } else { &outs };
     for &b in source {
         bad.push(resolve(&mut g, b)?);
     }
@@ -333,6 +361,18 @@ pub fn parse(bytes: &[u8]) -> Result<Aig, AigerError> {
         let x = resolve(&mut g, cl)?;
         g.constraints.push(x);
     }
+    for j in &justice_raw {
+        let mut lits = Vec::with_capacity(j.len());
+        for &l in j {
+            lits.push(resolve(&mut g, l)?);
+        }
+        g.justice.push(lits);
+    }
+    for &f in &fair_raw {
+        let x = resolve(&mut g, f)?;
+        g.fairness.push(x);
+    }
+    g.justice_names = names_j;
     g.bad = bad;
     g.input_names = names_i;
     g.latch_names = names_l;

@@ -39,8 +39,13 @@ fn number(g: &Aig) -> Numbered {
 }
 
 fn header(g: &Aig, n: &Numbered, kind: &str) -> String {
+    let live = if g.justice.is_empty() && g.fairness.is_empty() {
+        String::new()
+    } else {
+        format!(" {} {}", g.justice.len(), g.fairness.len())
+    };
     format!(
-        "{kind} {} {} {} 0 {} {} {}\n",
+        "{kind} {} {} {} 0 {} {} {}{live}\n",
         n.max_var,
         g.inputs.len(),
         g.latches.len(),
@@ -48,6 +53,27 @@ fn header(g: &Aig, n: &Numbered, kind: &str) -> String {
         g.bad.len(),
         g.constraints.len()
     )
+}
+
+/// The bad, constraint, justice and fairness sections (one literal per line; each justice
+/// property's size first).
+fn properties(g: &Aig, n: &Numbered, s: &mut String) {
+    let lit = |x: Lit| (n.map[x.var() as usize] << 1) | u32::from(x.is_neg());
+    for &b in &g.bad {
+        s.push_str(&format!("{}\n", lit(b)));
+    }
+    for &c in &g.constraints {
+        s.push_str(&format!("{}\n", lit(c)));
+    }
+    for j in &g.justice {
+        s.push_str(&format!("{}\n", j.len()));
+    }
+    for &l in g.justice.iter().flatten() {
+        s.push_str(&format!("{}\n", lit(l)));
+    }
+    for &f in &g.fairness {
+        s.push_str(&format!("{}\n", lit(f)));
+    }
 }
 
 fn latch_line(n: &Numbered, g: &Aig, i: usize, with_lhs: bool) -> String {
@@ -86,6 +112,11 @@ fn tail(g: &Aig, n: &Numbered, out: &mut Vec<u8>, comment: &str) {
             s.push_str(&format!("b{i} {nm}\n"));
         }
     }
+    for (i, name) in g.justice_names.iter().enumerate() {
+        if let Some(nm) = name {
+            s.push_str(&format!("j{i} {nm}\n"));
+        }
+    }
     if !comment.is_empty() {
         s.push_str("c\n");
         s.push_str(comment);
@@ -99,7 +130,6 @@ fn tail(g: &Aig, n: &Numbered, out: &mut Vec<u8>, comment: &str) {
 /// The ASCII AIGER (`aag`) text of a graph, with its symbol table and a comment.
 pub fn ascii(g: &Aig, comment: &str) -> Vec<u8> {
     let n = number(g);
-    let lit = |x: Lit| (n.map[x.var() as usize] << 1) | u32::from(x.is_neg());
     let mut s = header(g, &n, "aag");
     for &v in &g.inputs {
         s.push_str(&format!("{}\n", n.map[v as usize] << 1));
@@ -107,12 +137,7 @@ pub fn ascii(g: &Aig, comment: &str) -> Vec<u8> {
     for i in 0..g.latches.len() {
         s.push_str(&latch_line(&n, g, i, true));
     }
-    for &b in &g.bad {
-        s.push_str(&format!("{}\n", lit(b)));
-    }
-    for &c in &g.constraints {
-        s.push_str(&format!("{}\n", lit(c)));
-    }
+    properties(g, &n, &mut s);
     for &(o, a, b) in &n.ands {
         s.push_str(&format!("{o} {a} {b}\n"));
     }
@@ -132,17 +157,11 @@ fn push_delta(out: &mut Vec<u8>, mut x: u32) {
 /// The binary AIGER (`aig`) bytes of a graph, with its symbol table and a comment.
 pub fn binary(g: &Aig, comment: &str) -> Vec<u8> {
     let n = number(g);
-    let lit = |x: Lit| (n.map[x.var() as usize] << 1) | u32::from(x.is_neg());
     let mut s = header(g, &n, "aig");
     for i in 0..g.latches.len() {
         s.push_str(&latch_line(&n, g, i, false));
     }
-    for &b in &g.bad {
-        s.push_str(&format!("{}\n", lit(b)));
-    }
-    for &c in &g.constraints {
-        s.push_str(&format!("{}\n", lit(c)));
-    }
+    properties(g, &n, &mut s);
     let mut out = s.into_bytes();
     for &(o, a, b) in &n.ands {
         push_delta(&mut out, o - a);

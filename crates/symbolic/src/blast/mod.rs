@@ -89,6 +89,10 @@ pub struct Blasted {
     pub props: Vec<PropSignal>,
     /// The value of every slot after the step (for tests and diagnostics).
     pub post: Vec<Bv>,
+    /// Every atom of the temporal properties and fairness constraints, as it holds at the
+    /// position a step produces (the post-state with the step's inputs; an evaluation that
+    /// fails is false), in order of first occurrence.
+    pub atoms: Vec<(statecheck_ir::ExprId, Lit)>,
 }
 
 /// Symbolic execution state.
@@ -170,6 +174,24 @@ pub fn blast(p: &Program) -> Blasted {
     let assume = b.g.and_all(assumes);
     b.block(&p.step, Lit::TRUE);
     let no_err = b.ok;
+    let mut atoms: Vec<(statecheck_ir::ExprId, Lit)> = Vec::new();
+    let mut atom_exprs: Vec<statecheck_ir::ExprId> = Vec::new();
+    for t in &p.temporal {
+        match &t.formula {
+            statecheck_ir::temporal::TemporalFormula::Ltl(f) => atom_exprs.extend(f.atoms()),
+            statecheck_ir::temporal::TemporalFormula::Ctl(f) => atom_exprs.extend(f.atoms()),
+        }
+    }
+    for f in &p.fairness {
+        atom_exprs.extend(f.trigger);
+        atom_exprs.push(f.expr);
+    }
+    for e in atom_exprs {
+        if !atoms.iter().any(|&(a, _)| a == e) {
+            let l = b.holds(e);
+            atoms.push((e, l));
+        }
+    }
     let mut props = Vec::new();
     for prop in &p.properties {
         let (raw, reachable) = match prop.goal {
@@ -215,6 +237,7 @@ pub fn blast(p: &Program) -> Blasted {
         errs: b.errs,
         props,
         post: b.env,
+        atoms,
     }
 }
 

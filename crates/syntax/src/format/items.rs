@@ -13,6 +13,7 @@ enum SysMember<'t> {
     Assume(&'t crate::ast::Assume),
     Property(&'t Property),
     Observer(&'t Chart),
+    Config(&'t crate::ast::Configuration),
 }
 
 impl Printer<'_> {
@@ -100,7 +101,54 @@ impl Printer<'_> {
             }
             Item::Chart(c) => self.chart(c),
             Item::System(s) => self.system(s),
+            Item::Interface(i) => {
+                self.comments_before(i.name.span.end);
+                self.start_line(i.span.start);
+                self.out.push_str(&format!("interface {} {{", i.name.name));
+                let brace = self.lbrace_after(i.name.span.end);
+                self.open(brace);
+                for m in &i.members {
+                    let t = self.var_decl(m);
+                    self.line(m.span, &t);
+                }
+                self.close(i.span.end, "", i.span.end);
+            }
         }
+    }
+
+    /// `configuration NAME { inst = Chart(args); … }`, one binding per line.
+    fn configuration(&mut self, c: &crate::ast::Configuration) {
+        self.comments_before(c.name.span.end);
+        self.start_line(c.span.start);
+        self.out
+            .push_str(&format!("configuration {} {{", c.name.name));
+        let brace = self.lbrace_after(c.name.span.end);
+        self.open(brace);
+        for b in &c.bindings {
+            let t = format!(
+                "{} = {}{};",
+                b.instance.name,
+                b.chart.name,
+                self.args(&b.args)
+            );
+            self.line(b.span, &t);
+        }
+        self.close(c.span.end, "", c.span.end);
+    }
+
+    /// `(a, name = b)`, or nothing without arguments.
+    fn args(&self, args: &[crate::ast::Arg]) -> String {
+        if args.is_empty() {
+            return String::new();
+        }
+        let a: Vec<String> = args
+            .iter()
+            .map(|a| match &a.name {
+                Some(n) => format!("{} = {}", n.name, self.expr(&a.value)),
+                None => self.expr(&a.value),
+            })
+            .collect();
+        format!("({})", a.join(", "))
     }
 
     fn fn_decl(&mut self, f: &FnDecl) {
@@ -149,17 +197,41 @@ impl Printer<'_> {
 
     /// A chart (`role` is `plant`, `requirement`, or `observer` inside a system).
     fn chart(&mut self, c: &Chart) {
-        let head = match &c.role {
+        let mut head = match &c.role {
             Some(r) if r.name == "observer" => format!("observer {}", c.name.name),
             Some(r) => format!("{} chart {}", r.name, c.name.name),
             None => format!("chart {}", c.name.name),
         };
+        if !c.params.is_empty() {
+            let ps: Vec<String> = c
+                .params
+                .iter()
+                .map(|p| {
+                    let default = p
+                        .default
+                        .as_ref()
+                        .map(|e| format!(" = {}", self.expr(e)))
+                        .unwrap_or_default();
+                    format!("{}: {}{default}", p.name.name, self.ty(&p.ty))
+                })
+                .collect();
+            head.push_str(&format!("({})", ps.join(", ")));
+        }
+        if !c.implements.is_empty() {
+            let names: Vec<&str> = c.implements.iter().map(|i| i.name.as_str()).collect();
+            head.push_str(&format!(" implements {}", names.join(", ")));
+        }
         let ms = self.members(&c.body, &c.vars, &c.properties, true);
         self.comments_before(c.name.span.start);
         self.start_line(c.span.start);
         self.out.push_str(&head);
         self.out.push_str(" {");
-        let brace = self.lbrace_after(c.name.span.end);
+        let head_end = match (c.implements.last(), c.params.last()) {
+            (Some(i), _) => i.span.end,
+            (None, Some(p)) => p.span.end,
+            (None, None) => c.name.span.end,
+        };
+        let brace = self.lbrace_after(head_end);
         self.open(brace);
         self.print_members(&ms);
         self.close(c.span.end, "", c.span.end);
@@ -173,7 +245,8 @@ impl Printer<'_> {
                 .as_ref()
                 .map(|e| format!("[{}]", self.expr(e)))
                 .unwrap_or_default();
-            let t = format!("instance {}{count}: {};", i.name.name, i.chart.name);
+            let args = self.args(&i.args);
+            let t = format!("instance {}{count}: {}{args};", i.name.name, i.chart.name);
             ms.push((i.span.start, SysMember::Line(i.span, t)));
         }
         for c in &s.connections {
@@ -207,6 +280,9 @@ impl Printer<'_> {
         for o in &s.observers {
             ms.push((o.span.start, SysMember::Observer(o)));
         }
+        for c in &s.configurations {
+            ms.push((c.span.start, SysMember::Config(c)));
+        }
         ms.sort_by_key(|(k, _)| *k);
         self.comments_before(s.name.span.start);
         self.start_line(s.span.start);
@@ -219,6 +295,7 @@ impl Printer<'_> {
                 SysMember::Assume(a) => self.line_expr(a.span, "assume", &a.expr, ";"),
                 SysMember::Property(p) => self.property_line(p),
                 SysMember::Observer(c) => self.chart(c),
+                SysMember::Config(c) => self.configuration(c),
             }
         }
         self.close(s.span.end, "", s.span.end);

@@ -207,6 +207,14 @@ impl Printer {
             }
             Item::Chart(c) => self.chart(c),
             Item::System(s) => self.system(s),
+            Item::Interface(i) => {
+                self.line(format!("interface {}", i.name.name));
+                self.nested(|p| {
+                    for m in &i.members {
+                        p.line(format!("{:?} {} event={}", m.kind, m.name.name, m.is_event));
+                    }
+                });
+            }
         }
     }
 

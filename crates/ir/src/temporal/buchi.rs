@@ -10,8 +10,8 @@
 //! position's letter satisfies `q_i`'s literals. Acceptance is generalised: one set per
 //! `a U b` subformula (the states that do not promise it, or fulfil `b`).
 
-use statecheck_ir::temporal::Ltl;
-use statecheck_ir::ExprId;
+use super::Ltl;
+use crate::ExprId;
 use std::collections::{BTreeSet, HashMap};
 
 /// Most tableau nodes before the translation gives up.

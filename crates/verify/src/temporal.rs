@@ -1,0 +1,348 @@
+//! Systems with temporal properties (`ltl`, unbounded `respond`, `ctl`, `nonblocking`,
+//! `deadlock_free`) on an engine other than the explicit one.
+//!
+//! The rows are the safety properties first (decided as on any system: the portfolio, or one
+//! SAT engine), then the temporal ones in declaration order, then `deadlock_free` — the
+//! explicit engine's order. The two groups run side by side. A temporal row is raced, under
+//! [`Engine::Auto`], between the explicit engine's position graph and the SAT engines'
+//! reductions to safety (`statecheck_symbolic::live`: liveness-to-safety with IC3 and BMC,
+//! k-liveness with IC3); with one SAT engine it is that engine's reduction (IC3: both
+//! liveness-to-safety and k-liveness; k-induction and BMC: liveness-to-safety). CTL,
+//! `nonblocking` and `deadlock_free` are the explicit engine's only: under one SAT engine
+//! they are `unknown`, "not supported by this engine".
+
+use crate::single::early_end_reason;
+use crate::{portfolio, single, Engine, Error, Event, Meta, Options, Run, DEFAULT_BMC_DEPTH};
+use statecheck_explicit::ltl::DEADLOCK_FREE;
+use statecheck_explicit::{Report, Stats};
+use statecheck_ir::temporal::TemporalFormula;
+use statecheck_ir::verdict::{PropKind, PropResult};
+use statecheck_ir::Program;
+use statecheck_symbolic::blast::blast;
+use statecheck_symbolic::check::Engine as Sat;
+use statecheck_symbolic::engine::Limits;
+use statecheck_symbolic::live::{self, Method};
+use std::sync::atomic::{AtomicBool, Ordering};
+use std::sync::{mpsc, Arc, Mutex};
+use std::time::{Duration, Instant};
+
+/// The names of the rows a run reports, in report order: the selected safety properties (own
+/// and built-in), then the selected temporal properties, then `deadlock_free` (when the
+/// system has temporal properties or it is named).
+pub fn row_names(program: &Program, properties: &[String]) -> Vec<String> {
+    let (temporal, safety) = statecheck_explicit::ltl::split(program, properties);
+    let (safety, temporal) = if properties.is_empty() {
+        (
+            statecheck_ir::verdict::properties(program)
+                .into_iter()
+                .map(|p| p.name)
+                .collect(),
+            temporal_all(program),
+        )
+    } else {
+        (safety, temporal)
+    };
+    let mut out: Vec<String> = safety;
+    out.extend(
+        program
+            .temporal
+            .iter()
+            .filter(|t| temporal.contains(&t.name))
+            .map(|t| t.name.clone()),
+    );
+    if temporal.iter().any(|n| n == DEADLOCK_FREE) {
+        out.push(DEADLOCK_FREE.to_string());
+    }
+    out
+}
+
+/// Every temporal row of `program`, `deadlock_free` last.
+fn temporal_all(program: &Program) -> Vec<String> {
+    let mut t: Vec<String> = program.temporal.iter().map(|t| t.name.clone()).collect();
+    if !t.is_empty() {
+        t.push(DEADLOCK_FREE.to_string());
+    }
+    t
+}
+
+/// One temporal row: its name, kind and index in `Program::temporal` (`None`:
+/// `deadlock_free`).
+struct Row {
+    name: String,
+    kind: PropKind,
+    temporal: Option<usize>,
+}
+
+enum Msg {
+    Explicit(Vec<PropResult>, Duration),
+    Sat(
+        usize,
+        &'static str,
+        Box<statecheck_symbolic::check::SymResult>,
+    ),
+    Done,
+}
+
+/// `verify` of a system with temporal rows, on `opts.engine` (not `Explicit`).
+pub(crate) fn run(
+    program: &Program,
+    opts: &Options,
+    events: &(dyn Fn(Event) + Sync),
+) -> Result<Run, Error> {
+    let names = row_names(program, &opts.check.properties);
+    let (temporal_names, safety_names) = statecheck_explicit::ltl::split(program, &names);
+    let rows: Vec<Row> = temporal_names
+        .iter()
+        .map(|n| {
+            let t = program.temporal.iter().position(|t| &t.name == n);
+            Row {
+                name: n.clone(),
+                kind: t.map_or(PropKind::Builtin, |i| {
+                    live::kind(program.temporal[i].written)
+                }),
+                temporal: t,
+            }
+        })
+        .collect();
+    let offset = safety_names.len();
+    let mut safety_opts = opts.clone();
+    safety_opts.check.properties = safety_names.clone();
+    let (safety, temporal) = std::thread::scope(|s| {
+        let safety = s.spawn(|| {
+            if safety_names.is_empty() {
+                return Ok(None);
+            }
+            match (opts.engine, opts.engine.symbolic()) {
+                (_, Some(e)) => single::run_engine(program, &safety_opts, e, events),
+                _ => portfolio::run_auto(program, &safety_opts, events),
+            }
+            .map(Some)
+        });
+        let temporal = race(program, opts, &rows, offset, events);
+        // A panic in the safety thread is a bug: passed on as it is.
+        let safety = safety
+            .join()
+            .unwrap_or_else(|e| std::panic::resume_unwind(e));
+        (safety, temporal)
+    });
+    let safety = safety?;
+    let (mut results, mut meta, mut invariants, stats) = match safety {
+        Some(r) => (r.report.results, r.meta, r.invariants, r.report.stats),
+        None => (
+            Vec::new(),
+            Vec::new(),
+            Vec::new(),
+            Stats {
+                state_bits: program.state_bits(),
+                ..Stats::default()
+            },
+        ),
+    };
+    for (r, m) in temporal {
+        results.push(r);
+        meta.push(m);
+        invariants.push(None);
+    }
+    Ok(Run {
+        report: Report { results, stats },
+        meta,
+        invariants,
+    })
+}
+
+/// The methods each SAT engine runs on an LTL row.
+fn methods(engine: Engine) -> Vec<Method> {
+    match engine {
+        Engine::Ic3 => vec![Method::L2s(Sat::Ic3), Method::KLive],
+        Engine::Kind => vec![Method::L2s(Sat::Kind)],
+        Engine::Bmc => vec![Method::L2s(Sat::Bmc)],
+        Engine::Auto | Engine::Explicit => {
+            vec![Method::L2s(Sat::Bmc), Method::L2s(Sat::Ic3), Method::KLive]
+        }
+    }
+}
+
+/// Decide the temporal rows: the explicit engine (under `Auto`) and the SAT methods side by
+/// side, the first definitive verdict per row winning; each reported at `offset + row`.
+fn race(
+    program: &Program,
+    opts: &Options,
+    rows: &[Row],
+    offset: usize,
+    events: &(dyn Fn(Event) + Sync),
+) -> Vec<(PropResult, Meta)> {
+    let started = Instant::now();
+    let deadline = opts.check.timeout.map(|t| started + t);
+    let n = rows.len();
+    let auto = opts.engine == Engine::Auto;
+    let ltl: Vec<bool> = rows
+        .iter()
+        .map(|r| {
+            r.temporal
+                .is_some_and(|t| matches!(program.temporal[t].formula, TemporalFormula::Ltl(_)))
+        })
+        .collect();
+    let flags: Vec<Arc<AtomicBool>> = (0..n).map(|_| Arc::new(AtomicBool::new(false))).collect();
+    let stop = Arc::new(AtomicBool::new(false));
+    let got: Mutex<Vec<Option<(PropResult, Meta)>>> = Mutex::new(vec![None; n]);
+    let mut fallback: Vec<Option<(PropResult, Meta)>> = vec![None; n];
+    let decide = |i: usize, r: PropResult, m: Meta| {
+        flags[i].store(true, Ordering::Relaxed);
+        events(Event::Decided {
+            index: offset + i,
+            result: &r,
+            meta: &m,
+        });
+        if let Ok(mut g) = got.lock() {
+            g[i] = Some((r, m));
+        }
+    };
+    // Rows no SAT engine decides, under one SAT engine.
+    if !auto {
+        for (i, row) in rows.iter().enumerate().filter(|&(i, _)| !ltl[i]) {
+            let m = Meta {
+                engine: opts.engine.as_str(),
+                time_s: Some(0.0),
+                reason: Some(if row.temporal.is_some() {
+                    live::CTL_UNSUPPORTED.to_string()
+                } else {
+                    "not supported by this engine: deadlock_free is decided by the explicit engine"
+                        .to_string()
+                }),
+                decided_at_s: None,
+            };
+            decide(i, PropResult::unknown(&row.name, row.kind), m);
+        }
+    }
+    let (tx, rx) = mpsc::channel::<Msg>();
+    let mut workers = 0;
+    if auto {
+        workers += 1;
+        let tx = tx.clone();
+        let p = program.clone();
+        let sel: Vec<String> = rows.iter().map(|r| r.name.clone()).collect();
+        let o = opts.check.clone();
+        // Detached: the position graph has no stop flag; its own limits end it.
+        std::thread::spawn(move || {
+            crate::priority::lower_priority();
+            let t = Instant::now();
+            let (r, _) = statecheck_explicit::ltl::check(&p, Some(&sel), &o);
+            let _ = tx.send(Msg::Explicit(r, t.elapsed()));
+        });
+    }
+    let order: Vec<usize> = (0..n).filter(|&i| ltl[i]).collect();
+    let depth = match (opts.engine, opts.check.depth) {
+        (Engine::Bmc, None) => Some(DEFAULT_BMC_DEPTH as usize),
+        (_, d) => d.map(|d| d as usize),
+    };
+    let bl = (!order.is_empty()).then(|| blast(program));
+    std::thread::scope(|s| {
+        if let Some(bl) = &bl {
+            for m in methods(opts.engine) {
+                workers += 1;
+                let tx = tx.clone();
+                let (order, flags, stop, rows) = (&order, &flags, &stop, rows);
+                s.spawn(move || {
+                    for &i in order {
+                        if flags[i].load(Ordering::Relaxed) || stop.load(Ordering::Relaxed) {
+                            continue;
+                        }
+                        let lim = Limits {
+                            deadline,
+                            attempt_deadline: opts.property_timeout.map(|d| Instant::now() + d),
+                            max_depth: depth,
+                            stop: Some(Arc::clone(&flags[i])),
+                        };
+                        let t = rows[i].temporal.unwrap_or(0);
+                        let r = live::decide(program, bl, t, m, &lim);
+                        let _ = tx.send(Msg::Sat(i, m.as_str(), Box::new(r)));
+                    }
+                    let _ = tx.send(Msg::Done);
+                });
+            }
+        }
+        drop(tx);
+        let open = |got: &Mutex<Vec<Option<(PropResult, Meta)>>>| {
+            got.lock()
+                .map_or(0, |g| g.iter().filter(|x| x.is_none()).count())
+        };
+        let mut done = 0;
+        while open(&got) > 0 && done < workers {
+            let cancelled = opts.cancel.as_ref().is_some_and(|c| c.reason().is_some());
+            if cancelled || deadline.is_some_and(|d| Instant::now() >= d) {
+                break;
+            }
+            let msg = match rx.recv_timeout(Duration::from_millis(50)) {
+                Ok(m) => m,
+                Err(mpsc::RecvTimeoutError::Timeout) => continue,
+                Err(mpsc::RecvTimeoutError::Disconnected) => break,
+            };
+            let at = Some(started.elapsed().as_secs_f64());
+            let is_open = |i: usize| got.lock().is_ok_and(|g| g[i].is_none());
+            match msg {
+                Msg::Explicit(results, t) => {
+                    done += 1;
+                    for r in results {
+                        let Some(i) = rows.iter().position(|row| row.name == r.name) else {
+                            continue;
+                        };
+                        let m = Meta {
+                            engine: "explicit",
+                            time_s: Some(t.as_secs_f64()),
+                            reason: None,
+                            decided_at_s: at,
+                        };
+                        if r.verdict.is_definitive() && is_open(i) {
+                            decide(i, r, m);
+                        } else if fallback[i].is_none() {
+                            fallback[i] = Some((r, m));
+                        }
+                    }
+                }
+                Msg::Sat(i, engine, s) => {
+                    let mut m = single::meta_of(engine, &s);
+                    m.decided_at_s = at;
+                    if s.result.verdict.is_definitive() && is_open(i) {
+                        decide(i, s.result, m);
+                    } else if is_open(i) && (fallback[i].is_none() || !auto) {
+                        fallback[i] = Some((s.result, m));
+                    }
+                }
+                Msg::Done => done += 1,
+            }
+        }
+        stop.store(true, Ordering::Relaxed);
+        for f in &flags {
+            f.store(true, Ordering::Relaxed);
+        }
+    });
+    let why = early_end_reason(opts, deadline);
+    let mut got = got.into_inner().unwrap_or_default();
+    for (i, g) in got.iter_mut().enumerate() {
+        if g.is_some() {
+            continue;
+        }
+        let (r, mut m) = fallback[i].take().unwrap_or_else(|| {
+            (
+                PropResult::unknown(&rows[i].name, rows[i].kind),
+                Meta {
+                    engine: opts.engine.as_str(),
+                    time_s: Some(started.elapsed().as_secs_f64()),
+                    reason: None,
+                    decided_at_s: None,
+                },
+            )
+        });
+        // The run's end is the reason, unless the engine gave its own (its budget, a bound).
+        if r.verdict == statecheck_ir::verdict::Verdict::Unknown && m.reason.is_none() {
+            m.reason = Some(why.clone());
+        }
+        events(Event::Decided {
+            index: offset + i,
+            result: &r,
+            meta: &m,
+        });
+        *g = Some((r, m));
+    }
+    got.into_iter().flatten().collect()
+}
