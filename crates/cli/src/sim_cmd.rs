@@ -30,6 +30,11 @@ pub struct SimArgs {
     /// (default ½), e.g. `--rate fam.stallNow=0.01`; repeatable.
     #[arg(long, value_name = "INPUT=P", requires = "random")]
     rate: Vec<String>,
+    /// With --random: guide the inputs towards coverage — each tick, among candidate input
+    /// vectors allowed by the `assume`s, take one whose next state enters a state or fires a
+    /// transition not covered yet (the ordinary draw when none does); prints coverage growth.
+    #[arg(long, requires = "random", conflicts_with = "scenario")]
+    guided: bool,
     /// Seed of the random inputs.
     #[arg(long, default_value_t = 0)]
     seed: u64,
@@ -67,7 +72,7 @@ pub fn run(a: SimArgs) -> Result<u8> {
     let sys = loaded.system_in(a.system.as_deref(), a.config.as_deref())?;
     let program = loaded.lower(sys)?;
     let opts = Options {
-        coverage: a.coverage.is_some(),
+        coverage: a.coverage.is_some() || a.guided,
         no_trace: true,
         keep_going: a.keep_going,
     };
@@ -157,6 +162,9 @@ pub fn run(a: SimArgs) -> Result<u8> {
         }
         (None, Some(n)) => {
             let mut source = RandomInputs::new(&program, a.seed, n);
+            if a.guided {
+                source.set_guided(&program);
+            }
             for r in &a.rate {
                 let (name, p) = r
                     .split_once('=')
@@ -247,8 +255,22 @@ pub fn run(a: SimArgs) -> Result<u8> {
             let c = output::coverage::to_json(&program, counts, &loaded.sources);
             json_tail.push_str(&format!(",\"coverage\":{}", serde_json::to_string(&c)?));
         }
+        if run.coverage.is_some() && (a.coverage.is_some() || a.guided) {
+            let g: Vec<serde_json::Value> = run
+                .coverage_growth
+                .iter()
+                .map(|g| serde_json::json!({"tick": g.tick, "states": g.states, "transitions": g.transitions}))
+                .collect();
+            json_tail.push_str(&format!(
+                ",\"coverage_growth\":{}",
+                serde_json::to_string(&g)?
+            ));
+        }
     }
     sink.finish(&json_tail)?;
+    if run.coverage.is_some() && (a.coverage.is_some() || a.guided) && !a.quiet && !a.json {
+        eprint!("{}", growth_lines(&program, &run.coverage_growth));
+    }
     if let (Some(counts), Some(file)) = (&run.coverage, &a.coverage) {
         if !a.quiet && !a.json {
             eprint!(
@@ -268,6 +290,40 @@ pub fn run(a: SimArgs) -> Result<u8> {
         eprintln!("{message}");
     }
     Ok(code)
+}
+
+/// How coverage grew along a run: for states and for transitions, the ticks at which 50, 90
+/// and 100 % were reached and the tick of the last new item.
+fn growth_lines(p: &statecheck_ir::Program, growth: &[statecheck_sim::Growth]) -> String {
+    let counted = p.covers.iter().filter(|c| !c.expected_unreached);
+    let states = counted
+        .clone()
+        .filter(|c| matches!(c.kind, statecheck_ir::CoverKind::State(_)))
+        .count() as u32;
+    let total = [states, counted.count() as u32 - states];
+    let mut out = String::new();
+    for (i, what) in ["states", "transitions"].into_iter().enumerate() {
+        let count = |g: &statecheck_sim::Growth| if i == 0 { g.states } else { g.transitions };
+        let mut parts = Vec::new();
+        for pct in [50u32, 90, 100] {
+            let need = (u64::from(total[i]) * u64::from(pct)).div_ceil(100) as u32;
+            parts.push(match growth.iter().find(|g| count(g) >= need) {
+                Some(g) => format!("{pct}% at tick {}", g.tick),
+                None => format!("{pct}% not reached"),
+            });
+        }
+        let last = growth
+            .iter()
+            .enumerate()
+            .rfind(|(k, g)| *k == 0 || count(g) > count(&growth[k - 1]))
+            .map(|(_, g)| format!("; last new at tick {} ({}/{})", g.tick, count(g), total[i]))
+            .unwrap_or_default();
+        out.push_str(&format!(
+            "coverage growth, {what}: {}{last}\n",
+            parts.join(", ")
+        ));
+    }
+    out
 }
 
 /// The tick at which a run stopped (0 when it completed).

@@ -100,6 +100,10 @@ pub struct VerifyArgs {
     /// Also write each counterexample as a VCD waveform `DIR/PROPERTY.vcd` (needs --cex-dir).
     #[arg(long, requires = "cex_dir")]
     vcd: bool,
+    /// Write counterexamples and witnesses as the engines found them, without minimising
+    /// (by default inputs that do not matter are kept at their previous value).
+    #[arg(long)]
+    no_minimise: bool,
     // --- supervisor check (issue 7, docs/synthesis.md; implemented in synth_cmd) ---
     /// Check MODEL as a supervisor of the plant in this file: controllability, nonblocking and
     /// the requirements, in the closed loop (see docs/synthesis.md).
@@ -214,7 +218,10 @@ pub fn run(a: VerifyArgs) -> Result<u8> {
         columns,
         format,
         a.cex_dir.as_deref(),
-        a.vcd,
+        cex::Write {
+            vcd: a.vcd,
+            minimise: !a.no_minimise,
+        },
         show,
     );
     let cancel = statecheck_verify::Cancel::new();

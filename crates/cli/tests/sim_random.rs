@@ -228,10 +228,11 @@ fn rates_weight_the_random_inputs() {
     }
 }
 
-/// Streamed outputs stay whole documents: `--keep-going` runs all 1500 ticks of the FAM closed
-/// loop past its known violation (so the JSON holds 1500 ticks and ends as `violated`), the
+/// Streamed outputs stay whole documents: `--keep-going` runs all 1700 ticks of the FAM closed
+/// loop past its known violation (seed 1 with the model's fault rates 0.01 meets it at tick
+/// 1633), so the JSON holds 1700 ticks and ends as `violated`; the
 /// table past the 1000 rows that size its columns has one header and one row per tick, and
-/// the CSV one header and 1500 rows.
+/// the CSV one header and 1700 rows.
 #[test]
 fn streamed_outputs_are_whole_documents() {
     let args = |fmt: &'static str| {
@@ -239,7 +240,7 @@ fn streamed_outputs_are_whole_documents() {
             "sim",
             "examples/fam/fam_system.sc",
             "--random",
-            "1500",
+            "1700",
             "--seed",
             "1",
             "--keep-going",
@@ -252,14 +253,112 @@ fn streamed_outputs_are_whole_documents() {
     let out = statecheck(&args("--json"));
     assert_eq!(out.status.code(), Some(4));
     let v = json(&out);
-    assert_eq!(v["ticks"].as_array().map(Vec::len), Some(1500));
+    assert_eq!(v["ticks"].as_array().map(Vec::len), Some(1700));
     assert_eq!(v["result"]["status"], "violated");
     let out = statecheck(&args(""));
     let text = String::from_utf8_lossy(&out.stdout);
     let lines: Vec<&str> = text.lines().collect();
-    assert_eq!(lines.len(), 1501);
+    assert_eq!(lines.len(), 1701);
     assert!(lines[0].starts_with("tick"));
-    assert!(lines[1500].trim_start().starts_with("1499 "));
+    assert!(lines[1700].trim_start().starts_with("1699 "));
     let out = statecheck(&args("--csv"));
-    assert_eq!(String::from_utf8_lossy(&out.stdout).lines().count(), 1501);
+    assert_eq!(String::from_utf8_lossy(&out.stdout).lines().count(), 1701);
+}
+
+/// Rates declared in the model: tests/sim/rates.sc (derivations in the model). `Always` has
+/// `fill` at rate 1, `Never` at rate 0; `--rate` overrides the declared rate.
+#[test]
+fn declared_rates_weight_the_random_inputs_and_the_flag_overrides_them() {
+    let levels = |system: &str, rate: Option<&str>| -> Vec<i64> {
+        let mut args = vec![
+            "sim",
+            "tests/sim/rates.sc",
+            "--system",
+            system,
+            "--random",
+            "8",
+            "--seed",
+            "5",
+            "--json",
+        ];
+        if let Some(r) = rate {
+            args.extend(["--rate", r]);
+        }
+        let out = statecheck(&args);
+        assert_eq!(out.status.code(), Some(0), "{system} {rate:?}");
+        json(&out)["ticks"]
+            .as_array()
+            .expect("ticks")
+            .iter()
+            .map(|t| t["vars"]["t.level"].as_i64().expect("level"))
+            .collect()
+    };
+    assert_eq!(levels("Always", None), [0, 1, 2, 3, 3, 3, 3, 3]);
+    assert_eq!(levels("Never", None), [0; 8]);
+    assert_eq!(levels("Always", Some("t.fill=0")), [0; 8]);
+    // Rate 1 in `Never` (no assume bounds it): level 1, 2, 3 after ticks 1-3, and tick 4
+    // overflows `level` (int[0..3]): a run-time error, exit 1.
+    let out = statecheck(&[
+        "sim",
+        "tests/sim/rates.sc",
+        "--system",
+        "Never",
+        "--random",
+        "8",
+        "--rate",
+        "t.fill=1",
+        "--json",
+    ]);
+    assert_eq!(out.status.code(), Some(1));
+    let v = json(&out);
+    assert_eq!(v["result"]["status"], "runtime_error");
+    assert_eq!(v["result"]["tick"], 4);
+}
+
+/// `--guided`: tests/sim/rare.sc (derivation in the model). Guided, all three states are
+/// covered by tick 2 (Idle at tick 0, Armed at 1, Open at 2) and both transitions by tick 2.
+/// Unguided, `a && b` has probability 1/10,000 per tick: seed 0 stays in Idle for 1000 ticks
+/// (an event of probability 0.9999^999 ≈ 0.90 for a random seed; the seed is fixed).
+#[test]
+fn guided_random_simulation_reaches_a_rare_state_within_two_ticks() {
+    let growth = |guided: bool| -> Vec<(u64, u64, u64)> {
+        let mut args = vec![
+            "sim",
+            "tests/sim/rare.sc",
+            "--random",
+            "1000",
+            "--seed",
+            "0",
+            "--coverage",
+            "--json",
+        ];
+        if guided {
+            args.push("--guided");
+        }
+        let out = statecheck(&args);
+        assert_eq!(out.status.code(), Some(0));
+        json(&out)["coverage_growth"]
+            .as_array()
+            .expect("coverage_growth")
+            .iter()
+            .map(|g| {
+                (
+                    g["tick"].as_u64().expect("tick"),
+                    g["states"].as_u64().expect("states"),
+                    g["transitions"].as_u64().expect("transitions"),
+                )
+            })
+            .collect()
+    };
+    assert_eq!(growth(true), [(0, 1, 0), (1, 2, 1), (2, 3, 2)]);
+    assert_eq!(growth(false), [(0, 1, 0)]);
+    for args in [&["--guided"][..], &["--guided", "--scenario", "-"]] {
+        let mut a = vec!["sim", "tests/sim/rare.sc"];
+        a.extend(args);
+        assert_eq!(
+            statecheck(&a).status.code(),
+            Some(2),
+            "--guided needs --random"
+        );
+    }
 }

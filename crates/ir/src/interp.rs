@@ -94,6 +94,13 @@ impl<'p> Machine<'p> {
         self.coverage = Some(vec![0; self.program.covers.len()]);
     }
 
+    /// Set every coverage counter back to zero (when enabled), to see what one tick covers.
+    pub fn clear_coverage(&mut self) {
+        if let Some(c) = &mut self.coverage {
+            c.fill(0);
+        }
+    }
+
     /// Coverage counters (if enabled), indexed like [`Program::covers`].
     pub fn coverage(&self) -> Option<&[u64]> {
         self.coverage.as_deref()

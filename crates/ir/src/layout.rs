@@ -370,6 +370,11 @@ pub(crate) fn layout(model: &Model, sys: &System) -> Layout {
                 is_event,
                 instance,
                 var,
+                rate: sys
+                    .rates
+                    .iter()
+                    .find(|r| (r.instance, r.var) == (instance, var))
+                    .map(|r| r.rate),
             })
             .collect(),
         instances,

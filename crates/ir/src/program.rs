@@ -319,6 +319,9 @@ pub struct Input {
     pub instance: u32,
     /// The variable.
     pub var: VarId,
+    /// The probability that random simulation makes it 1 in a tick, when the system declares
+    /// one (`rate instance.input = P;`); random simulation draws ½ otherwise.
+    pub rate: Option<f64>,
 }
 
 /// Property kinds in the IR.

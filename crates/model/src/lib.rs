@@ -18,6 +18,7 @@ pub mod model;
 pub mod ops;
 mod params;
 mod property;
+mod rate;
 mod rebase;
 mod scope;
 mod suggest;
@@ -173,6 +174,7 @@ pub fn check(file: &ast::File) -> (Model, Vec<Diagnostic>) {
             connections: Vec::new(),
             order: vec![0],
             assumes: Vec::new(),
+            rates: Vec::new(),
             properties,
             requirements: Vec::new(),
             span: c.name.span,

@@ -401,6 +401,19 @@ pub struct Connection {
     pub span: Span,
 }
 
+/// `rate instance.input = P;` after flattening (one per instance of `instance[*].input`).
+#[derive(Clone, Debug)]
+pub struct InputRate {
+    /// The instance.
+    pub instance: u32,
+    /// Its input (a boolean or an event, not driven by a connection).
+    pub var: VarId,
+    /// The probability of `true` (or presence) per tick, from 0 to 1.
+    pub rate: f64,
+    /// The declaration.
+    pub span: Span,
+}
+
 /// A checked system: flat instances, connections, execution order, assumptions, properties.
 #[derive(Clone, Debug)]
 pub struct System {
@@ -416,6 +429,8 @@ pub struct System {
     pub order: Vec<u32>,
     /// Constraints on free inputs, evaluated every tick.
     pub assumes: Vec<Expr>,
+    /// `rate` declarations: how often random simulation makes a free boolean input true.
+    pub rates: Vec<InputRate>,
     /// Properties (system-level, then each instance's chart properties).
     pub properties: Vec<Property>,
     /// State-based synthesis requirements (`docs/synthesis.md`).

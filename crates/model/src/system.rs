@@ -144,6 +144,7 @@ pub(crate) fn check_system(
         fn_limit: usize::MAX,
     };
     let connections = check_connections(ck, &scope, s, &instances);
+    let rates = crate::rate::check_rates(ck, &scope, s, &instances, &connections);
 
     // Execution order: the written order, then observers.
     let mut order: Vec<u32> = Vec::new();
@@ -262,6 +263,7 @@ pub(crate) fn check_system(
         connections,
         order,
         assumes,
+        rates,
         properties,
         requirements,
         span: s.name.span,
@@ -274,123 +276,12 @@ fn check_connections(
     s: &ast::System,
     instances: &[Instance],
 ) -> Vec<Connection> {
-    let groups = scope.instances.expect("system scope");
     let mut out: Vec<Connection> = Vec::new();
-    let endpoint = |ck: &mut ExprChecker,
-                    p: &ast::Path,
-                    allow_all: bool|
-     -> Option<Vec<(u32, u32)>> {
-        if p.segments.len() != 2 || p.segments[1].index.is_some() {
-            ck.sink.push(
-                Diagnostic::error(
-                    "E0123",
-                    "a connection endpoint is `instance.variable`",
-                    p.span,
-                )
-                .with_label("expected `instance.variable`"),
-            );
-            return None;
-        }
-        let seg = &p.segments[0];
-        let Some(g) = groups.get(&seg.name.name) else {
-            let mut names: Vec<String> = groups.keys().cloned().collect();
-            names.sort();
-            ck.sink
-                .push(unknown_instance(&seg.name.name, seg.name.span, &names));
-            return None;
-        };
-        let chart = &scope.charts[g.chart as usize];
-        let vname = &p.segments[1].name.name;
-        let Some(v) = chart.var(vname) else {
-            let mut d = Diagnostic::error(
-                "E0101",
-                format!("chart `{}` has no variable `{vname}`", chart.name),
-                p.segments[1].name.span,
-            )
-            .with_label("unknown variable");
-            if let Some(c) =
-                crate::suggest::closest(vname, chart.vars.iter().map(|v| v.name.as_str()))
-            {
-                d = d.with_hint(format!("did you mean `{c}`?"));
-            }
-            ck.sink.push(d);
-            return None;
-        };
-        let insts: Vec<u32> = match (&seg.index, g.len) {
-            (Some(ast::Index::All(span)), Some(len)) => {
-                if !allow_all {
-                    ck.sink.push(
-                        Diagnostic::error("E0123", "`[*]` is only allowed on the receiving side", *span)
-                            .with_label("one sender per connection")
-                            .with_hint("connect one element (`[0]`) to many receivers (`[*]`), not many to one"),
-                    );
-                    return None;
-                }
-                (g.first..g.first + len).collect()
-            }
-            (Some(ast::Index::At(e)), Some(len)) => {
-                let i = ck.const_value(
-                    &Scope {
-                        chart: None,
-                        instances: None,
-                        charts: &[],
-                        locals: Vec::new(),
-                        fn_limit: usize::MAX,
-                    },
-                    e,
-                )?;
-                if i < 0 || i >= len as i64 {
-                    ck.sink.push(
-                        Diagnostic::error(
-                            "E0104",
-                            format!(
-                                "index {i} out of range for `{}` (length {len})",
-                                seg.name.name
-                            ),
-                            e.span(),
-                        )
-                        .with_label(format!("must be within 0..{}", len - 1)),
-                    );
-                    return None;
-                }
-                vec![g.first + i as u32]
-            }
-            (None, None) => vec![g.first],
-            (None, Some(_)) => {
-                let n = &seg.name.name;
-                let hint = if allow_all {
-                    format!("write `{n}[0]` for one element, or `{n}[*]` for every element")
-                } else {
-                    format!("write `{n}[0]`")
-                };
-                ck.sink.push(
-                    Diagnostic::error(
-                        "E0123",
-                        format!("`{n}` is an array of instances and needs an index"),
-                        seg.name.span,
-                    )
-                    .with_label("needs an index")
-                    .with_hint(hint),
-                );
-                return None;
-            }
-            (Some(_), None) => {
-                ck.sink.push(
-                    Diagnostic::error(
-                        "E0123",
-                        format!("`{}` is not an instance array", seg.name.name),
-                        seg.name.span,
-                    )
-                    .with_label("remove the index"),
-                );
-                return None;
-            }
-        };
-        Some(insts.into_iter().map(|i| (i, v)).collect())
-    };
     for c in &s.connections {
-        let (Some(from), Some(to)) = (endpoint(ck, &c.from, false), endpoint(ck, &c.to, true))
-        else {
+        let (Some(from), Some(to)) = (
+            endpoint(ck, scope, &c.from, false),
+            endpoint(ck, scope, &c.to, true),
+        ) else {
             continue;
         };
         let (fi, fv) = from[0];
@@ -493,4 +384,127 @@ fn unknown_instance(name: &str, span: statecheck_base::Span, declared: &[String]
         d = d.with_hint(format!("did you mean `{c}`?"));
     }
     d
+}
+
+/// The instances and variable that `instance.variable` names in a system (every element for
+/// `instance[*].variable` when `allow_all`); `None` after reporting why it names none.
+pub(crate) fn endpoint(
+    ck: &mut ExprChecker,
+    scope: &Scope,
+    p: &ast::Path,
+    allow_all: bool,
+) -> Option<Vec<(u32, u32)>> {
+    let groups = scope.instances?;
+    if p.segments.len() != 2 || p.segments[1].index.is_some() {
+        ck.sink.push(
+            Diagnostic::error(
+                "E0123",
+                "a connection endpoint is `instance.variable`",
+                p.span,
+            )
+            .with_label("expected `instance.variable`"),
+        );
+        return None;
+    }
+    let seg = &p.segments[0];
+    let Some(g) = groups.get(&seg.name.name) else {
+        let mut names: Vec<String> = groups.keys().cloned().collect();
+        names.sort();
+        ck.sink
+            .push(unknown_instance(&seg.name.name, seg.name.span, &names));
+        return None;
+    };
+    let chart = &scope.charts[g.chart as usize];
+    let vname = &p.segments[1].name.name;
+    let Some(v) = chart.var(vname) else {
+        let mut d = Diagnostic::error(
+            "E0101",
+            format!("chart `{}` has no variable `{vname}`", chart.name),
+            p.segments[1].name.span,
+        )
+        .with_label("unknown variable");
+        if let Some(c) = crate::suggest::closest(vname, chart.vars.iter().map(|v| v.name.as_str()))
+        {
+            d = d.with_hint(format!("did you mean `{c}`?"));
+        }
+        ck.sink.push(d);
+        return None;
+    };
+    let insts: Vec<u32> = match (&seg.index, g.len) {
+        (Some(ast::Index::All(span)), Some(len)) => {
+            if !allow_all {
+                ck.sink.push(
+                    Diagnostic::error(
+                        "E0123",
+                        "`[*]` is only allowed on the receiving side",
+                        *span,
+                    )
+                    .with_label("one sender per connection")
+                    .with_hint(
+                        "connect one element (`[0]`) to many receivers (`[*]`), not many to one",
+                    ),
+                );
+                return None;
+            }
+            (g.first..g.first + len).collect()
+        }
+        (Some(ast::Index::At(e)), Some(len)) => {
+            let i = ck.const_value(
+                &Scope {
+                    chart: None,
+                    instances: None,
+                    charts: &[],
+                    locals: Vec::new(),
+                    fn_limit: usize::MAX,
+                },
+                e,
+            )?;
+            if i < 0 || i >= len as i64 {
+                ck.sink.push(
+                    Diagnostic::error(
+                        "E0104",
+                        format!(
+                            "index {i} out of range for `{}` (length {len})",
+                            seg.name.name
+                        ),
+                        e.span(),
+                    )
+                    .with_label(format!("must be within 0..{}", len - 1)),
+                );
+                return None;
+            }
+            vec![g.first + i as u32]
+        }
+        (None, None) => vec![g.first],
+        (None, Some(_)) => {
+            let n = &seg.name.name;
+            let hint = if allow_all {
+                format!("write `{n}[0]` for one element, or `{n}[*]` for every element")
+            } else {
+                format!("write `{n}[0]`")
+            };
+            ck.sink.push(
+                Diagnostic::error(
+                    "E0123",
+                    format!("`{n}` is an array of instances and needs an index"),
+                    seg.name.span,
+                )
+                .with_label("needs an index")
+                .with_hint(hint),
+            );
+            return None;
+        }
+        (Some(_), None) => {
+            ck.sink.push(
+                Diagnostic::error(
+                    "E0123",
+                    format!("`{}` is not an instance array", seg.name.name),
+                    seg.name.span,
+                )
+                .with_label("remove the index"),
+            );
+            return None;
+        }
+    };
+    Some(insts.into_iter().map(|i| (i, v)).collect())
 }

@@ -1,7 +1,8 @@
 //! Random inputs within their types and the system's `assume`s, from a seed.
 //!
 //! The distribution of a tick's inputs is the product of one distribution per input (uniform
-//! over its range; a boolean or event present with probability ½ unless a rate is given)
+//! over its range; a boolean or event present with probability ½ unless a rate is declared in
+//! the model, `rate instance.input = P;`, or given by [`RandomInputs::set_rate`])
 //! conditioned on the `assume`s holding. The `assume`s are solved the way the explicit engine
 //! solves them ([`statecheck_ir::assume`]), by the same code:
 //!
@@ -38,6 +39,8 @@ pub struct RandomInputs {
     /// Per input: the probability that it is 1, for a 0..1 input given a rate.
     rates: Vec<(usize, f64)>,
     solved: Option<Solved>,
+    /// With [`RandomInputs::set_guided`]: what the run has covered.
+    guide: Option<crate::guided::Guide>,
 }
 
 /// The `assume`s of one program, solved.
@@ -68,18 +71,31 @@ pub struct RateError {
 
 impl RandomInputs {
     /// `ticks` ticks of random inputs of `program` from `seed` (the same seed gives the same
-    /// inputs).
+    /// inputs), with the rates the system declares (`rate instance.input = P;`).
     pub fn new(program: &Program, seed: u64, ticks: u64) -> Self {
+        let rates: Vec<(usize, f64)> = program
+            .inputs
+            .iter()
+            .enumerate()
+            .filter_map(|(k, i)| i.rate.map(|r| (k, r)))
+            .collect();
         RandomInputs {
             rng: rand::rngs::StdRng::seed_from_u64(seed),
             ticks,
-            rates: Vec::new(),
-            solved: Some(Solved::new(program, &[])),
+            solved: Some(Solved::new(program, &rates)),
+            rates,
+            guide: None,
         }
     }
 
+    /// Guide the inputs towards coverage (`crate::guided`): each tick, prefer a vector whose
+    /// successor enters a state or fires a transition not covered yet.
+    pub fn set_guided(&mut self, program: &Program) {
+        self.guide = Some(crate::guided::Guide::new(program));
+    }
+
     /// Make input `k` of `program` (in [`Program::inputs`] order, a boolean or event, or an
-    /// integer in `0..1`) be 1 with probability `rate` instead of ½.
+    /// integer in `0..1`) be 1 with probability `rate` instead of ½ or the declared rate.
     pub fn set_rate(&mut self, program: &Program, k: usize, rate: f64) -> Result<(), RateError> {
         let err = |message: String| RateError { input: k, message };
         let Some(inp) = program.inputs.get(k) else {
@@ -97,6 +113,7 @@ impl RandomInputs {
                 s.lo, s.hi
             )));
         }
+        self.rates.retain(|&(j, _)| j != k);
         self.rates.push((k, rate));
         self.solved = Some(Solved::new(program, &self.rates));
         Ok(())
@@ -270,6 +287,66 @@ impl Solved {
     }
 }
 
+impl Solved {
+    /// The candidates of a guided tick (`crate::guided`), flat, `first` (the ordinary draw)
+    /// first: every allowed vector when there are few, else more draws and `first` with each
+    /// 0..1 input flipped; all satisfy the `assume`s in the state of `m`.
+    fn candidates(&mut self, m: &Machine, rng: &mut impl Rng, first: &[i64], out: &mut Vec<i64>) {
+        let p = m.program();
+        let w = first.len();
+        out.clear();
+        out.extend_from_slice(first);
+        if let Some((_, n)) = self
+            .space
+            .listed()
+            .filter(|&(_, n)| n <= crate::guided::MAX_LISTED)
+        {
+            for pos in 0..n {
+                let v = self.space.vector(pos as u128);
+                if v != first && self.admits(p, &v) {
+                    out.extend_from_slice(&v);
+                }
+            }
+            return;
+        }
+        let mut v = vec![0; w];
+        if self.space.listed().is_none()
+            && self.space.per_tick() <= crate::guided::MAX_LISTED as u128
+        {
+            self.space.first(&mut v);
+            for _ in 0..self.space.per_tick() {
+                let c = v.clone();
+                if c != first && self.admits(p, &c) {
+                    out.extend_from_slice(&c);
+                }
+                self.space.advance(&mut v);
+            }
+            return;
+        }
+        for _ in 0..crate::guided::EXTRA_DRAWS {
+            if self.draw(m, rng, &mut v).is_ok() {
+                out.extend_from_slice(&v);
+            }
+        }
+        for k in 0..w {
+            if self.space.bounds(k) != (0, 1) {
+                continue;
+            }
+            v.copy_from_slice(first);
+            v[k] = 1 - v[k];
+            if self.admits(p, &v) {
+                out.extend_from_slice(&v);
+            }
+        }
+    }
+
+    /// Whether every `assume` holds for inputs `v` in the state copied by the last draw.
+    fn admits(&mut self, p: &Program, v: &[i64]) -> bool {
+        self.set_inputs(v);
+        p.assumes.iter().all(|&a| self.holds(p, a))
+    }
+}
+
 /// The weight of a vector under the rates: the product of each rated input's probability of
 /// its value (unrated inputs contribute the same factor to every vector).
 fn weight(rates: &[Option<f64>], v: &[i64]) -> f64 {
@@ -304,6 +381,17 @@ impl InputSource for RandomInputs {
         let solved = self
             .solved
             .get_or_insert_with(|| Solved::new(machine.program(), &self.rates));
-        solved.draw(machine, &mut self.rng, inputs).map(|()| true)
+        solved.draw(machine, &mut self.rng, inputs)?;
+        if let Some(guide) = &mut self.guide {
+            let w = inputs.len();
+            let mut cands = std::mem::take(guide.candidates_mut());
+            solved.candidates(machine, &mut self.rng, inputs, &mut cands);
+            *guide.candidates_mut() = cands;
+            let i = guide.choose(machine, w);
+            if i > 0 {
+                inputs.copy_from_slice(&guide.candidates_mut()[i * w..i * w + w]);
+            }
+        }
+        Ok(true)
     }
 }

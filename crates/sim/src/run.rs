@@ -53,11 +53,40 @@ pub struct Run {
     pub reached: Vec<(String, Option<u64>)>,
     /// Coverage counters, if requested.
     pub coverage: Option<Vec<u64>>,
+    /// With coverage: each tick after which more states or transitions had been covered than
+    /// before it, with the counts (how coverage grew along the run).
+    pub coverage_growth: Vec<Growth>,
     /// The inputs applied, one full vector per tick (for `--save-scenario`).
     pub inputs: Vec<Vec<i64>>,
     /// When the run ended with [`Stop::AssumeViolated`] because the input source found no
     /// inputs: why (a random source's deadlock, or draws exhausted).
     pub no_input: Option<NoInput>,
+}
+
+/// Coverage after a tick that covered something new (see [`Run::coverage_growth`]).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Growth {
+    /// The tick.
+    pub tick: u64,
+    /// States entered at least once by the end of the tick.
+    pub states: u32,
+    /// Transitions (and choice branches) taken at least once by the end of the tick.
+    pub transitions: u32,
+}
+
+/// The numbers of state and of transition coverage items with a non-zero count (items meant
+/// never to be covered, an observer's `error`, left out as in the coverage report).
+pub fn covered_counts(program: &Program, counts: &[u64]) -> (u32, u32) {
+    let (mut s, mut t) = (0, 0);
+    for (c, &n) in program.covers.iter().zip(counts) {
+        if n > 0 && !c.expected_unreached {
+            match c.kind {
+                statecheck_ir::CoverKind::State(_) => s += 1,
+                _ => t += 1,
+            }
+        }
+    }
+    (s, t)
 }
 
 /// Why an input source gave no inputs for a tick.
@@ -205,6 +234,7 @@ pub fn run_streaming(
     let mut reached = unreached(program);
     let mut no_input = None;
     let mut first_violation = None;
+    let mut growth: Vec<Growth> = Vec::new();
     let mut tick = 0u64;
     let stop = loop {
         match source.next(tick, &m, &mut inputs) {
@@ -224,6 +254,19 @@ pub fn run_streaming(
         // The violating tick is part of the trace; a failed or refused one is not.
         if matches!(result, Ok(()) | Err(Stop::Violation { .. })) {
             sink.tick(tick, m.slots());
+            if let Some(c) = m.coverage() {
+                let (states, transitions) = covered_counts(program, c);
+                if growth
+                    .last()
+                    .is_none_or(|g| (g.states, g.transitions) != (states, transitions))
+                {
+                    growth.push(Growth {
+                        tick,
+                        states,
+                        transitions,
+                    });
+                }
+            }
         }
         match result {
             Err(v @ Stop::Violation { .. }) if opts.keep_going => {
@@ -243,6 +286,7 @@ pub fn run_streaming(
         stop,
         reached,
         coverage: m.coverage().map(<[u64]>::to_vec),
+        coverage_growth: growth,
         inputs: Vec::new(),
         no_input,
     }

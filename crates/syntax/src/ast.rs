@@ -592,6 +592,8 @@ pub struct System {
     pub order: Vec<OrderDecl>,
     /// `assume expr;` constraints on the free inputs of every tick.
     pub assumes: Vec<Assume>,
+    /// `rate instance.input = 0.01;` how often random simulation makes an input true.
+    pub rates: Vec<Rate>,
     /// Properties (issue 3).
     pub properties: Vec<Property>,
     /// Observer (assertion) charts declared inline: `observer Name { ...chart body... }`.
@@ -702,6 +704,20 @@ pub struct OrderDecl {
 pub struct Assume {
     /// The constraint, over free inputs and state.
     pub expr: Expr,
+    /// Whole declaration.
+    pub span: Span,
+}
+
+/// `rate instance.input = 0.01;`: the probability that random simulation makes a free boolean
+/// input true (an input event present) in a tick, beside the `assume`s.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Rate {
+    /// The input: `instance.input`, `instance[i].input` or `instance[*].input`.
+    pub target: Path,
+    /// The probability as written (a decimal literal such as `0.01`, or `0`/`1`).
+    pub value: String,
+    /// Where the probability is written.
+    pub value_span: Span,
     /// Whole declaration.
     pub span: Span,
 }

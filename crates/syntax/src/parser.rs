@@ -29,12 +29,14 @@
 //! | E0019 | `if` expression used as an operand without parentheses |
 //! | E0020 | missing `return` in a function body |
 //! | E0021 | malformed `import`: no quoted path, or a bad name list |
+//! | E0022 | malformed `rate`: the probability is not a decimal literal such as `0.01` |
 //! | E0030 | malformed CTL until: `A[`/`E[` without `U` |
 
 mod body;
 mod expr;
 mod imports;
 mod items;
+mod rate;
 mod temporal;
 
 use crate::ast;

@@ -5,6 +5,7 @@
 #
 #   cargo build --release -p statecheck-cli
 #   crates/verify/benches/auto_vs_single.sh [TIMEOUT_S]
+#   MODELS="examples/linear_drive/*.sc tests/verify/*.sc" crates/verify/benches/auto_vs_single.sh 10
 #
 # Each run gets TIMEOUT_S seconds (default 60); a run that leaves a property unknown is shown
 # with `*` and is not a candidate for "fastest".
@@ -16,7 +17,7 @@ T=${1:-60}
 systems() { grep -o '^system [A-Za-z_][A-Za-z0-9_]*' "$1" | cut -d' ' -f2; }
 now() { date +%s.%N; }
 printf '%-40s %9s %9s %9s %9s %9s %7s\n' model explicit bmc kind ic3 auto ratio
-for f in examples/linear_drive/*.sc examples/fam/*.sc tests/verify/*.sc; do
+for f in ${MODELS:-examples/linear_drive/*.sc examples/fam/*.sc tests/verify/*.sc}; do
   case "$f" in *hard.sc) continue ;; esac
   for s in $(systems "$f"); do
     line=$(printf '%-40s' "$(basename "$f"):$s")

@@ -7,6 +7,7 @@ use anyhow::Result;
 use statecheck_explicit::{PropKind, PropResult};
 use statecheck_ir::view::TraceView as Views;
 use statecheck_ir::Program;
+use statecheck_sim::minimise::{minimise, Target};
 use statecheck_sim::{scenario, Options, ScenarioInputs, Stop, TickRecord};
 
 /// A counterexample or witness after replay.
@@ -31,19 +32,51 @@ pub fn create_dir(dir: Option<&str>) -> Result<()> {
     Ok(())
 }
 
+/// How counterexamples are written.
+#[derive(Clone, Copy, Debug)]
+pub struct Write {
+    /// Also write a VCD waveform beside each scenario.
+    pub vcd: bool,
+    /// Keep inputs that do not matter at their previous value (`statecheck_sim::minimise`).
+    pub minimise: bool,
+}
+
+/// What the minimised trace of a result must still show, or `None` for the traces that are
+/// not minimised: lassos, CTL and nonblocking paths (the simulator does not evaluate them)
+/// and deadlocks.
+fn target(r: &PropResult) -> Option<Target> {
+    if r.loop_start.is_some() {
+        return None;
+    }
+    let name = r.name.clone();
+    match r.kind {
+        PropKind::Ctl | PropKind::Nonblocking => None,
+        PropKind::Reachable => Some(Target::Reached(name)),
+        PropKind::Builtin if r.name == "deadlock_free" => None,
+        PropKind::Builtin => Some(Target::RuntimeError(name)),
+        _ => Some(Target::Violation(name)),
+    }
+}
+
 /// Write and replay the counterexample of one result, if it has one (the directory exists).
 pub fn one(
     loaded: &Loaded,
     program: &Program,
     r: &PropResult,
     dir: Option<&str>,
-    vcd: bool,
+    write: Write,
 ) -> Result<Option<Cex>> {
+    let vcd = write.vcd;
     let views = Views::new(&loaded.model, program);
     {
-        let Some(vectors) = &r.counterexample else {
+        let Some(raw) = &r.counterexample else {
             return Ok(None);
         };
+        let minimised = match target(r) {
+            Some(t) if write.minimise => minimise(program, raw, &t),
+            _ => None,
+        };
+        let vectors = minimised.as_ref().unwrap_or(raw);
         let (sc, run, broken) = match r.loop_start {
             Some(k) => {
                 let sc = scenario::from_lasso(program, vectors, k as usize);

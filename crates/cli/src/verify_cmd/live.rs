@@ -31,7 +31,7 @@ pub struct Live<'a> {
     columns: Columns,
     format: Format,
     cex_dir: Option<&'a str>,
-    vcd: bool,
+    write: cex::Write,
     started: Instant,
     /// Per result: its counterexample once written (or the error writing it).
     cexs: Mutex<Vec<Option<anyhow::Result<Option<Cex>>>>>,
@@ -57,7 +57,7 @@ impl<'a> Live<'a> {
         columns: Columns,
         format: Format,
         cex_dir: Option<&'a str>,
-        vcd: bool,
+        write: cex::Write,
         show_progress: bool,
     ) -> Live<'a> {
         let n = names.len();
@@ -69,7 +69,7 @@ impl<'a> Live<'a> {
             columns,
             format,
             cex_dir,
-            vcd,
+            write,
             started: Instant::now(),
             cexs: Mutex::new((0..n).map(|_| None).collect()),
             display,
@@ -148,7 +148,7 @@ impl<'a> Live<'a> {
     }
 
     fn decided(&self, index: usize, r: &PropResult, m: &Meta) {
-        let c = cex::one(self.loaded, self.program, r, self.cex_dir, self.vcd);
+        let c = cex::one(self.loaded, self.program, r, self.cex_dir, self.write);
         let line = match self.format {
             Format::Table => Some(self.columns.row(r, m)),
             Format::JsonLines => {
@@ -208,7 +208,7 @@ impl<'a> Live<'a> {
             .zip(all)
             .map(|(r, c)| match c {
                 Some(c) => c,
-                None => cex::one(self.loaded, self.program, r, self.cex_dir, self.vcd),
+                None => cex::one(self.loaded, self.program, r, self.cex_dir, self.write),
             })
             .collect()
     }

@@ -332,6 +332,7 @@ fn random_program(seed: u64) -> Program {
             is_event: false,
             instance: 0,
             var: slot,
+            rate: None,
         })
         .collect();
     let procs = (0..g.n_procs)

@@ -261,6 +261,10 @@ impl Printer<'_> {
         for a in &s.assumes {
             ms.push((a.span.start, SysMember::Assume(a)));
         }
+        for r in &s.rates {
+            let t = format!("rate {} = {};", self.path(&r.target), r.value);
+            ms.push((r.span.start, SysMember::Line(r.span, t)));
+        }
         for p in &s.properties {
             ms.push((p.span.start, SysMember::Property(p)));
         }

@@ -660,6 +660,7 @@ impl Parser<'_> {
             connections: Vec::new(),
             order: Vec::new(),
             assumes: Vec::new(),
+            rates: Vec::new(),
             properties: Vec::new(),
             observers: Vec::new(),
             requirements: Vec::new(),
@@ -687,6 +688,7 @@ impl Parser<'_> {
                 Tok::Ident if self.at_temporal_decl() => {
                     self.temporal_property().map(|p| sys.properties.push(p))
                 }
+                Tok::Ident if self.at_rate_decl() => self.rate().map(|r| sys.rates.push(r)),
                 Tok::Ident
                     if self.text(self.tok().span) == "configuration"
                         && self.nth(1).kind == Tok::Ident
@@ -728,7 +730,7 @@ impl Parser<'_> {
                 }
                 _ => {
                     self.unexpected(
-                        "a system element (`instance`, `connect`, `order`, `assume`, a property or `observer`)",
+                        "a system element (`instance`, `connect`, `order`, `assume`, `rate`, a property or `observer`)",
                         None,
                     );
                     Ok(())
