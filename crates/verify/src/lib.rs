@@ -172,6 +172,11 @@ pub fn verify(
     // the one SAT engine asked for (`temporal.rs`).
     let (temporal, _) = statecheck_explicit::ltl::split(program, &opts.check.properties);
     let temporal = !program.temporal.is_empty() || !temporal.is_empty();
+    if opts.engine == Engine::Auto {
+        if let Some(run) = portfolio::quick_explicit(program, opts, events) {
+            return Ok(run);
+        }
+    }
     let mut run = match (opts.engine, opts.engine.symbolic()) {
         (Engine::Explicit, _) => single::run_explicit(program, opts, events),
         _ if temporal => temporal::run(program, opts, events),
