@@ -122,6 +122,9 @@ fn all_models() -> Vec<(String, Option<String>)> {
                 .filter_map(|l| l.split_whitespace().next())
                 .map(|s| s.trim_end_matches('{').to_string())
                 .collect();
+            if WIDER_THAN_32_BITS.contains(&rel.as_str()) {
+                continue;
+            }
             if systems.is_empty() {
                 out.push((rel, None));
             } else {
@@ -130,6 +133,24 @@ fn all_models() -> Vec<(String, Option<String>)> {
         }
     }
     out
+}
+
+/// Models whose values need 64 bits: Modelica's `Integer` is 32-bit, so the generator refuses
+/// them (docs/codegen.md) instead of translating them; `minrem.sc` pins `MIN % -1` for
+/// MIN = -2^63.
+const WIDER_THAN_32_BITS: [&str; 1] = ["tests/semantics/minrem.sc"];
+
+#[test]
+fn models_wider_than_32_bits_are_refused_with_the_reason() {
+    for model in WIDER_THAN_32_BITS {
+        let out = cli(&["gen", "modelica", model]);
+        assert!(!out.status.success(), "{model}: generated");
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert!(
+            err.contains("wider than a 32-bit Modelica Integer"),
+            "{model}: {err}"
+        );
+    }
 }
 
 // ----- snapshots -------------------------------------------------------------------------------
@@ -635,7 +656,9 @@ fn scenarios() -> Vec<(String, Option<String>, PathBuf)> {
                     }
                 }
             };
-            out.push((model, system, f));
+            if !WIDER_THAN_32_BITS.contains(&model.as_str()) {
+                out.push((model, system, f));
+            }
         }
     }
     out
