@@ -33,6 +33,7 @@
 //! | E0030 | malformed CTL until: `A[`/`E[` without `U` |
 
 mod body;
+mod components;
 mod expr;
 mod imports;
 mod items;

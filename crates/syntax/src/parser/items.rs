@@ -3,9 +3,9 @@
 use super::body::is_body_kw;
 use super::{is_chart_elem_kw, is_item_kw, is_system_kw, Failed, PResult, Parser};
 use crate::ast::{
-    Arg, Assume, Binding, Chart, ChartParam, Configuration, ConstDecl, Control, EnumDecl, Expr,
-    File, FnDecl, Ident, Instance, InterfaceDecl, Item, OrderDecl, Param, Property, PropertyKind,
-    RequirementKind, StateBody, StateRequirement, System, TickDecl, VarDecl, VarKind,
+    Assume, Chart, ConstDecl, Control, EnumDecl, Expr, File, FnDecl, Ident, Instance, Item,
+    OrderDecl, Param, Property, PropertyKind, RequirementKind, StateBody, StateRequirement, System,
+    TickDecl, VarDecl, VarKind,
 };
 use crate::lexer::{Kw, Tok};
 use statecheck_base::{Diagnostic, Span};
@@ -335,80 +335,6 @@ impl Parser<'_> {
         Ok(chart)
     }
 
-    /// `'(' [ IDENT ':' type [ '=' expr ] { ',' … } ] ')'` after a chart's name.
-    fn chart_params(&mut self) -> PResult<Vec<ChartParam>> {
-        let open = self.bump().span;
-        let mut params = Vec::new();
-        if self.eat(Tok::RParen).is_some() {
-            return Ok(params);
-        }
-        loop {
-            let name = self.expect_ident("a parameter name")?;
-            if self.eat(Tok::Colon).is_none() {
-                let d = self
-                    .expected_diag("`:` after the parameter name")
-                    .with_hint(format!(
-                        "chart parameters need a type, e.g. `{}: int`",
-                        name.name
-                    ));
-                self.report(d);
-                return Err(Failed);
-            }
-            let ty = self.ty()?;
-            let default = if self.eat(Tok::Assign).is_some() {
-                Some(self.expr())
-            } else {
-                None
-            };
-            let span = self.span_from(name.span);
-            params.push(ChartParam {
-                name,
-                ty,
-                default,
-                span,
-            });
-            if self.eat(Tok::Comma).is_some() {
-                continue;
-            }
-            if !self.close(Tok::RParen, open, "the parameter list") {
-                return Err(Failed);
-            }
-            return Ok(params);
-        }
-    }
-
-    /// `'(' [ arg { ',' arg } ] ')'` after an instance's chart, `arg = [ IDENT '=' ] expr`.
-    fn instance_args(&mut self) -> PResult<Vec<Arg>> {
-        let open = self.bump().span;
-        let mut args = Vec::new();
-        if self.eat(Tok::RParen).is_some() {
-            return Ok(args);
-        }
-        loop {
-            let start = self.tok().span;
-            let name = if self.at(Tok::Ident) && self.nth(1).kind == Tok::Assign {
-                let t = self.bump();
-                self.bump();
-                Some(self.ident_of(t))
-            } else {
-                None
-            };
-            let value = self.expr();
-            args.push(Arg {
-                name,
-                value,
-                span: self.span_from(start),
-            });
-            if self.eat(Tok::Comma).is_some() {
-                continue;
-            }
-            if !self.close(Tok::RParen, open, "the argument list") {
-                return Err(Failed);
-            }
-            return Ok(args);
-        }
-    }
-
     /// The elements of a chart (or observer) body after its `{`.
     fn chart_elems(&mut self, chart: &mut Chart, open: Span, what: &str, outer: fn(Tok) -> bool) {
         loop {
@@ -464,7 +390,7 @@ impl Parser<'_> {
     }
 
     /// `( 'input' | 'output' | 'local' ) ( 'event' IDENT | IDENT ':' type [ '=' expr ] ) ';'`
-    fn var_decl(&mut self) -> PResult<VarDecl> {
+    pub(super) fn var_decl(&mut self) -> PResult<VarDecl> {
         let t = self.bump();
         let kind = match t.kind {
             Tok::Kw(Kw::Input) => VarKind::Input,
@@ -774,87 +700,6 @@ impl Parser<'_> {
             chart,
             args,
             span: self.span_from(start),
-        })
-    }
-
-    /// `'interface' IDENT '{' { ( 'input' | 'output' ) var_decl } '}'`
-    fn interface(&mut self) -> PResult<InterfaceDecl> {
-        let start = self.bump().span;
-        let name = self.expect_ident("an interface name after `interface`")?;
-        let open = self.expect(Tok::LBrace, "after the interface name")?;
-        let what = format!("interface `{}`", name.name);
-        let mut members = Vec::new();
-        loop {
-            if self.at_list_end(open, &what, is_item_kw) {
-                break;
-            }
-            let pos = self.pos;
-            let r = if self.at_kw(Kw::Input) || self.at_kw(Kw::Output) {
-                self.var_decl().map(|v| members.push(v))
-            } else {
-                self.unexpected(
-                    "a port of the interface (`input x: T;`, `output event e;`, …)",
-                    None,
-                );
-                Ok(())
-            };
-            if r.is_err() {
-                self.recover();
-            }
-            if self.pos == pos {
-                self.bump();
-            }
-        }
-        Ok(InterfaceDecl {
-            name,
-            members,
-            span: self.span_from(start),
-        })
-    }
-
-    /// `'configuration' IDENT '{' { IDENT '=' IDENT [ '(' args ')' ] ';' } '}'`
-    fn configuration(&mut self) -> PResult<Configuration> {
-        let start = self.bump().span;
-        let name = self.expect_ident("a configuration name after `configuration`")?;
-        let open = self.expect(Tok::LBrace, "after the configuration name")?;
-        let what = format!("configuration `{}`", name.name);
-        let mut bindings = Vec::new();
-        loop {
-            if self.at_list_end(open, &what, is_item_kw) {
-                break;
-            }
-            let pos = self.pos;
-            let r = self.binding().map(|b| bindings.push(b));
-            if r.is_err() {
-                self.recover();
-            }
-            if self.pos == pos {
-                self.bump();
-            }
-        }
-        Ok(Configuration {
-            name,
-            bindings,
-            span: self.span_from(start),
-        })
-    }
-
-    /// `IDENT '=' IDENT [ '(' args ')' ] ';'`
-    fn binding(&mut self) -> PResult<Binding> {
-        let instance = self.expect_ident("an instance name")?;
-        self.expect(Tok::Assign, "after the instance name")?;
-        let chart = self.expect_ident("a chart name after `=`")?;
-        let args = if self.at(Tok::LParen) {
-            self.instance_args()?
-        } else {
-            Vec::new()
-        };
-        self.expect_semi("after the binding");
-        Ok(Binding {
-            span: self.span_from(instance.span),
-            instance,
-            chart,
-            args,
         })
     }
 
