@@ -8,7 +8,7 @@ use crate::pack::{Key, Packer};
 use crate::props::{Check, Spec};
 use crate::table::{shard_of, SHARDS};
 use statecheck_ir::assume::InputSpace;
-use statecheck_ir::{ExprId, Machine, Prepared, Program, RuntimeError};
+use statecheck_ir::{ExprId, Goal, Machine, Prepared, Program, RuntimeError};
 
 /// A successor found while expanding: its key and how it was reached.
 pub(crate) struct Cand<K> {
@@ -356,11 +356,18 @@ impl<'a, 'p> StateCheck<'a, 'p> {
 /// property — exactly the simulator's reading: an expression whose evaluation fails is false.
 pub(crate) fn decides(m: &mut Machine, check: Check) -> bool {
     match check {
-        // `holds` first: it usually holds, and then `when` need not be evaluated (both are
-        // pure, so the order does not change the answer).
-        Check::Always { when, holds } => {
-            !m.holds(holds.code) && when.is_none_or(|a| m.holds(a.code))
+        // The IR's reading of the goal, each expression through its compiled code.
+        Check::Always { when, holds } => Goal::Always {
+            when: when.map(|w| w.id),
+            holds: holds.id,
         }
+        .decided_by(|e| {
+            let code = match when {
+                Some(w) if e != holds.id => w.code,
+                _ => holds.code,
+            };
+            m.holds(code)
+        }),
         Check::Reach { target } => m.holds(target.code),
         Check::Builtin(_) => false,
     }
