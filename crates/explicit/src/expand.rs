@@ -6,6 +6,7 @@
 use crate::native::NativeRun;
 use crate::pack::{Key, Packer};
 use crate::props::{Check, Spec};
+use crate::reduce::{Reducer, Tally};
 use crate::table::{shard_of, SHARDS};
 use statecheck_ir::assume::InputSpace;
 use statecheck_ir::{ExprId, Goal, Machine, Prepared, Program, RuntimeError};
@@ -52,6 +53,8 @@ pub(crate) struct Expander<'a> {
     pub coverage: bool,
     /// The native successor generator, used once it is ready (see [`crate::native`]).
     pub native: Option<&'a NativeRun>,
+    /// The input abstraction, when enabled ([`crate::Options::reduce_inputs`]).
+    pub reduce: Option<&'a Reducer>,
 }
 
 impl Expander<'_> {
@@ -87,6 +90,9 @@ impl Expander<'_> {
             per_tick.extend(self.prepared(&sp.input_assumes));
         }
         let state_assumes = self.prepared(&sp.state_assumes);
+        let mut walker = self.reduce.filter(|r| r.cost.worth()).map(|r| r.walker(p));
+        let mut tally = Tally::new();
+        let all = u64::try_from(sp.per_tick()).unwrap_or(u64::MAX);
         for (j, key) in states.iter().enumerate() {
             let pos = (first_pos + j) as u32;
             self.packer.unpack(key, &mut words, &mut state);
@@ -95,6 +101,31 @@ impl Expander<'_> {
                 if !state_assumes.iter().all(|a| m.holds(*a)) {
                     continue;
                 }
+            }
+            tally.begin();
+            let groups = match (self.reduce, walker.as_mut()) {
+                (Some(r), Some(w)) => {
+                    let g = r.groups(w, sp, &state);
+                    tally.walked(g.as_ref().map_or(0, |g| all - g.first.len() as u64));
+                    g
+                }
+                _ => None,
+            };
+            if let Some(g) = groups {
+                for (k, &idx) in g.first.iter().enumerate() {
+                    m.load(&state, &g.vectors[k * n..k * n + n]);
+                    if per_tick.iter().all(|a| m.holds(*a)) {
+                        let t = Tick {
+                            key,
+                            pos,
+                            input: idx,
+                        };
+                        out.transitions += g.size[k] - 1;
+                        self.transition(&mut m, t, &mut open, &mut words, &mut out);
+                    }
+                }
+                tally.stepped(g.first.len() as u64);
+                continue;
             }
             match sp.listed() {
                 Some((flat, count)) => {
@@ -126,6 +157,10 @@ impl Expander<'_> {
                     }
                 }
             }
+            tally.stepped(all);
+        }
+        if let Some(r) = self.reduce {
+            r.cost.record(&tally);
         }
         out.coverage = m.coverage().map(<[u64]>::to_vec);
         out

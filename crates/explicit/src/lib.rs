@@ -27,6 +27,7 @@ pub mod ltl;
 mod native;
 pub mod pack;
 pub mod props;
+mod reduce;
 mod search;
 pub mod successors;
 pub mod table;
@@ -74,6 +75,10 @@ pub struct Options {
     /// What builds native successor generators; without one, the interpreter computes every
     /// successor.
     pub compiler: Option<std::sync::Arc<dyn SuccessorCompiler>>,
+    /// Step one input vector per combination of the inputs a tick can read from the state
+    /// (`statecheck_ir::assume::InputReads`), not every vector: the same states, verdicts,
+    /// counterexamples and transition counts, fewer ticks run (on by default).
+    pub reduce_inputs: bool,
     /// Raised by another thread to end the run early (Ctrl-C, another engine answered): the
     /// search checks it between blocks and ends with [`Limit::Stopped`]; counterexamples
     /// already found are still rebuilt.
@@ -123,6 +128,7 @@ impl Default for Options {
             backend: Backend::Auto,
             native_sample: 64,
             compiler: None,
+            reduce_inputs: true,
             stop: None,
         }
     }
@@ -381,6 +387,9 @@ fn verify_safety(
             f(pr);
         }
     };
+    let reducer = opts
+        .reduce_inputs
+        .then(|| reduce::Reducer::new(per_transition_reads(&space, &specs)));
     let exp = Expander {
         program,
         packer: &packer,
@@ -388,6 +397,7 @@ fn verify_safety(
         specs: &specs,
         coverage: true,
         native: native.as_ref(),
+        reduce: reducer.as_ref(),
     };
     let explore = |exp: &Expander, stats: Stats| {
         pool.install(|| {
@@ -397,6 +407,14 @@ fn verify_safety(
                 run::<u64>(exp, opts, start, stats, Some(&watch))
             } else if packer.bits <= 127 {
                 run::<u128>(exp, opts, start, stats, Some(&watch))
+            } else if packer.bits < 192 {
+                run::<[u64; 3]>(exp, opts, start, stats, Some(&watch))
+            } else if packer.bits < 256 {
+                run::<[u64; 4]>(exp, opts, start, stats, Some(&watch))
+            } else if packer.bits < 384 {
+                run::<[u64; 6]>(exp, opts, start, stats, Some(&watch))
+            } else if packer.bits < 512 {
+                run::<[u64; 8]>(exp, opts, start, stats, Some(&watch))
             } else {
                 run::<Box<[u64]>>(exp, opts, start, stats, Some(&watch))
             }
@@ -430,6 +448,21 @@ fn verify_safety(
         report.stats.native_note = Some(note);
     }
     Ok(report)
+}
+
+/// What is evaluated on every transition besides the tick: the properties not checked per
+/// state, and the assumes not solved up front (their inputs count as read in every state).
+fn per_transition_reads(space: &InputSpace, specs: &[props::Spec]) -> Vec<statecheck_ir::ExprId> {
+    let mut extra: Vec<_> = specs
+        .iter()
+        .filter(|s| !s.per_state)
+        .flat_map(|s| s.check.exprs())
+        .collect();
+    extra.extend(&space.mixed_assumes);
+    if space.listed().is_none() {
+        extra.extend(&space.input_assumes);
+    }
+    extra
 }
 
 /// The native generator of a run, if `opts` asks for one: built now for [`Backend::Native`],

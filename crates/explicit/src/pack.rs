@@ -401,6 +401,33 @@ impl Key for u128 {
     }
 }
 
+/// A packed vector of up to `N` words held inline (no allocation per state), for states of
+/// fewer than `N * 64` bits: the top bit of the last word is then always clear, so all ones
+/// marks an empty slot. Shorter vectors are padded with zeros.
+impl<const N: usize> Key for [u64; N] {
+    fn from_words(words: &[u64]) -> Self {
+        let mut k = [0u64; N];
+        k[..words.len()].copy_from_slice(words);
+        k
+    }
+    fn to_words(&self, words: &mut [u64]) {
+        let n = words.len();
+        words.copy_from_slice(&self[..n]);
+    }
+    fn hash64(&self) -> u64 {
+        self.iter().fold(0x9e37_79b9_7f4a_7c15, |h, w| fmix(h ^ w))
+    }
+    fn empty() -> Self {
+        [u64::MAX; N]
+    }
+    fn is_empty(&self) -> bool {
+        *self == [u64::MAX; N]
+    }
+    fn heap_bytes(&self) -> usize {
+        0
+    }
+}
+
 impl Key for Box<[u64]> {
     fn from_words(words: &[u64]) -> Self {
         words.into()

@@ -36,7 +36,7 @@ pub(crate) enum Check {
 
 impl Check {
     /// The expressions it evaluates.
-    fn exprs(self) -> Vec<ExprId> {
+    pub(crate) fn exprs(self) -> Vec<ExprId> {
         match self {
             Check::Always { when, holds } => {
                 std::iter::once(holds).chain(when).map(|e| e.id).collect()

@@ -124,12 +124,7 @@ pub(crate) fn search<K: Key>(
     let chunk = (4096 / branching).clamp(1, 512) as usize;
     let block = chunk * 256;
     // Bytes per key outside a table: the key itself, plus the words of a boxed key.
-    let key_bytes = (std::mem::size_of::<K>()
-        + if std::mem::size_of::<K>() > 16 {
-            exp.packer.words * 8
-        } else {
-            0
-        }) as u64;
+    let key_bytes = (std::mem::size_of::<K>() + K::from_words(&words).heap_bytes()) as u64;
     let tracking = track.is_some();
     // One per-state checker per shard (a machine each), reset for every block.
     let mut checkers: Vec<StateCheck<'_, '_>> = (0..SHARDS)

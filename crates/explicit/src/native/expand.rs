@@ -22,8 +22,10 @@ struct Scratch {
     post: Vec<i64>,
     /// Packing scratch for the interpreter's successors.
     pack: Vec<u64>,
-    /// The chosen input vectors, when mixed assumes choose.
+    /// The chosen input vectors, when mixed assumes or the input abstraction choose.
     idx: Vec<u32>,
+    /// Transitions each chosen vector stands for (the input abstraction's group sizes).
+    weight: Vec<u64>,
     /// Packed successors, `words` per chosen vector.
     succ: Vec<u64>,
     /// Status per chosen vector.
@@ -58,14 +60,17 @@ impl Expander<'_> {
             post: vec![0; p.n_state],
             pack: vec![0; w],
             idx: Vec::with_capacity(count),
+            weight: Vec::with_capacity(count),
             succ: vec![0; count * w],
             status: vec![0; count],
             covers: vec![0; p.covers.len().max(1)],
         };
+        let mut walker = self.reduce.filter(|r| r.cost.worth()).map(|r| r.walker(p));
+        let mut tally = crate::reduce::Tally::new();
         for (j, key) in states.iter().enumerate() {
             let pos = (first_pos + j) as u32;
             key.to_words(&mut s.words);
-            let unpacked = !state_assumes.is_empty() || !mixed.is_empty();
+            let unpacked = !state_assumes.is_empty() || !mixed.is_empty() || walker.is_some();
             if unpacked {
                 self.packer.unpack(key, &mut s.pack, &mut s.state);
                 m.load_state(&s.state);
@@ -73,19 +78,40 @@ impl Expander<'_> {
                     continue;
                 }
             }
-            let list: &[u32] = if mixed.is_empty() {
+            tally.begin();
+            let groups = match (self.reduce, walker.as_mut()) {
+                (Some(r), Some(w)) => {
+                    let g = r.groups(w, sp, &s.state);
+                    tally.walked(g.as_ref().map_or(0, |g| (count - g.first.len()) as u64));
+                    g
+                }
+                _ => None,
+            };
+            let list: &[u32] = if mixed.is_empty() && groups.is_none() {
                 &run.all
             } else {
                 s.idx.clear();
-                for &v in &run.all {
+                s.weight.clear();
+                let (chosen, sizes): (&[u32], Option<&[u64]>) = match &groups {
+                    Some(g) => (&g.first, Some(&g.size)),
+                    None => (&run.all, None),
+                };
+                for (k, &v) in chosen.iter().enumerate() {
                     let at = v as usize * n;
-                    m.load(&s.state, &run.vectors[at..at + n]);
-                    if mixed.iter().all(|a| m.holds(*a)) {
-                        s.idx.push(v);
+                    if !mixed.is_empty() {
+                        m.load(&s.state, &run.vectors[at..at + n]);
+                        if !mixed.iter().all(|a| m.holds(*a)) {
+                            continue;
+                        }
                     }
+                    s.idx.push(v);
+                    s.weight.push(sizes.map_or(1, |w| w[k]));
                 }
                 &s.idx
             };
+            if groups.is_some() {
+                out.transitions += s.weight.iter().sum::<u64>() - s.idx.len() as u64;
+            }
             if !native.expand(
                 &s.words,
                 &run.vectors,
@@ -142,6 +168,10 @@ impl Expander<'_> {
                     }
                 }
             }
+            tally.stepped(list.len() as u64);
+        }
+        if let Some(r) = self.reduce {
+            r.cost.record(&tally);
         }
         if self.coverage {
             let mut counts: Vec<u64> = s.covers.iter().map(|&b| u64::from(b)).collect();

@@ -11,6 +11,8 @@
 mod enumerate;
 mod interval;
 pub mod reads;
+mod relevant;
 mod space;
 
+pub use relevant::InputReads;
 pub use space::{InputSpace, MAX_STATIC_ENUMERATION};

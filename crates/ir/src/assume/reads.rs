@@ -44,11 +44,18 @@ pub fn input_slots(p: &Program) -> Range<u32> {
 /// The input slots `e` reads (sorted, deduplicated).
 pub fn inputs_read(p: &Program, e: ExprId) -> Vec<u32> {
     let inputs = input_slots(p);
+    let mut out = slots_read(p, e);
+    out.retain(|s| inputs.contains(s));
+    out
+}
+
+/// Every slot `e` reads (sorted, deduplicated).
+pub fn slots_read(p: &Program, e: ExprId) -> Vec<u32> {
     let mut out = Vec::new();
     let mut stack = vec![e];
     while let Some(e) = stack.pop() {
         match p.nodes.get(e as usize) {
-            Some(Node::Slot(s)) if inputs.contains(s) => out.push(*s),
+            Some(Node::Slot(s)) => out.push(*s),
             Some(Node::Unary(_, a) | Node::Abs(a, _) | Node::Check(a, _, _, _)) => stack.push(*a),
             Some(
                 Node::Binary(_, a, b, _) | Node::Min(a, b) | Node::Max(a, b) | Node::Let(_, a, b),
