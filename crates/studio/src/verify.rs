@@ -52,8 +52,12 @@ pub fn result(l: &Loaded, index: usize, r: &PropResult, meta: &Meta) -> Value {
             scenario::format(&sc, p)
         )
     });
+    // The tick that decides the property (the last of the counterexample or witness).
+    let tick = r.counterexample.as_ref().map(|_| r.depth.saturating_sub(1));
     json!({
         "type": "verdict",
+        "tick": tick,
+        "time_text": tick.and_then(|t| p.time_text(t)),
         "index": index,
         "name": r.name,
         "kind": r.kind.as_str(),

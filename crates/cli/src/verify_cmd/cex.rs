@@ -136,12 +136,7 @@ pub fn one(
                 crate::outpath::write(std::path::Path::new(&file), text.as_bytes())?;
                 if vcd {
                     let vfile = format!("{d}/{}.vcd", file_name(&r.name));
-                    let text = output::vcd::render(
-                        program,
-                        &views,
-                        &run.trace,
-                        loaded.model.tick_ms.unwrap_or(1),
-                    );
+                    let text = output::vcd::render(program, &views, &run.trace);
                     crate::outpath::write(std::path::Path::new(&vfile), text.as_bytes())?;
                 }
                 Some(file)
