@@ -41,23 +41,6 @@ pub struct Write {
     pub minimise: bool,
 }
 
-/// What the minimised trace of a result must still show, or `None` for the traces that are
-/// not minimised: lassos, CTL and nonblocking paths (the simulator does not evaluate them)
-/// and deadlocks.
-fn target(r: &PropResult) -> Option<Target> {
-    if r.loop_start.is_some() {
-        return None;
-    }
-    let name = r.name.clone();
-    match r.kind {
-        PropKind::Ctl | PropKind::Nonblocking => None,
-        PropKind::Reachable => Some(Target::Reached(name)),
-        PropKind::Builtin if r.name == "deadlock_free" => None,
-        PropKind::Builtin => Some(Target::RuntimeError(name)),
-        _ => Some(Target::Violation(name)),
-    }
-}
-
 /// Write and replay the counterexample of one result, if it has one (the directory exists).
 pub fn one(
     loaded: &Loaded,
@@ -72,7 +55,7 @@ pub fn one(
         let Some(raw) = &r.counterexample else {
             return Ok(None);
         };
-        let minimised = match target(r) {
+        let minimised = match Target::of(r) {
             Some(t) if write.minimise => minimise(program, raw, &t),
             _ => None,
         };
