@@ -237,3 +237,42 @@ fn without_a_tick_nothing_shows_a_time() {
     assert_eq!(scale, Some((1, vcd::TimescaleUnit::MS)));
     assert_eq!(stamps.last(), Some(&6));
 }
+
+#[test]
+fn the_configuration_matrix_gives_each_violation_its_time() {
+    // feeders.sc: the light stroke ends in tick 39 (39 × 1.25 s = 48.75 s), the heavy one in
+    // tick 95 (118.75 s).
+    let model = "tests/time/feeders.sc";
+    let out = statecheck(&["verify", model, "--all-configs", "--engine", "explicit"]);
+    assert_eq!(out.status.code(), Some(1), "{}", text(&out.stderr));
+    let table = text(&out.stdout);
+    let row = |c: &str| {
+        table
+            .lines()
+            .find(|l| l.starts_with(c))
+            .unwrap_or_default()
+            .to_string()
+    };
+    assert!(row("light").contains("violated (48.75 s)"), "{table}");
+    assert!(row("heavy").contains("violated (118.75 s)"), "{table}");
+    let out = statecheck(&[
+        "verify",
+        model,
+        "--all-configs",
+        "--engine",
+        "explicit",
+        "--json",
+    ]);
+    let v: Value = serde_json::from_slice(&out.stdout).expect("JSON");
+    let cell = |k: usize| v["configurations"][k]["results"][0].clone();
+    assert_eq!(
+        (&cell(0)["tick"], &cell(0)["time"]),
+        (&serde_json::json!(39), &serde_json::json!(48.75))
+    );
+    assert_eq!(
+        (&cell(1)["tick"], &cell(1)["time"]),
+        (&serde_json::json!(95), &serde_json::json!(118.75))
+    );
+    // A proved property has no tick.
+    assert!(v["configurations"][0]["results"][1].get("tick").is_none());
+}
