@@ -89,16 +89,18 @@ pub fn one(
                     .and_then(|(_, t)| *t);
                 (at != Some(tick)).then(|| {
                     format!(
-                        "the simulator ended with {} before seeing `{}` at tick {tick}",
-                        describe(&run.stop),
-                        r.name
+                        "the simulator ended with {} before seeing `{}` at {}",
+                        describe(program, &run.stop),
+                        r.name,
+                        program.tick_label(tick)
                     )
                 })
             }
             (Stop::Violation { tick: t, property }, _) => (!(*property == r.name && *t == tick))
                 .then(|| {
                     format!(
-                        "the simulator stops earlier: property `{property}` violated at tick {t}"
+                        "the simulator stops earlier: property `{property}` violated at {}",
+                        program.tick_label(*t)
                     )
                 }),
             (Stop::RuntimeError { tick: t, error }, PropKind::Builtin)
@@ -108,7 +110,7 @@ pub fn one(
             }
             (stop, _) => Some(format!(
                 "the simulator ended with {} instead",
-                describe(stop)
+                describe(program, stop)
             )),
         };
         let path = match dir {
@@ -135,17 +137,20 @@ pub fn one(
     }
 }
 
-fn describe(stop: &Stop) -> String {
+fn describe(p: &Program, stop: &Stop) -> String {
     match stop {
         Stop::Completed => "the scenario completed".into(),
         Stop::RuntimeError { tick, error } => format!(
-            "a run-time error ({}) at tick {tick}",
-            error.kind.builtin_property()
+            "a run-time error ({}) at {}",
+            error.kind.builtin_property(),
+            p.tick_label(*tick)
         ),
         Stop::Violation { tick, property } => {
-            format!("property `{property}` violated at tick {tick}")
+            format!("property `{property}` violated at {}", p.tick_label(*tick))
         }
-        Stop::AssumeViolated { tick, .. } => format!("an `assume` violated at tick {tick}"),
+        Stop::AssumeViolated { tick, .. } => {
+            format!("an `assume` violated at {}", p.tick_label(*tick))
+        }
     }
 }
 
