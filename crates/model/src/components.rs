@@ -403,23 +403,7 @@ fn member(
     }
     let Some(t) = &m.ty else { return };
     let want = ck.resolve_type(t);
-    let fits = match (want, v.ty) {
-        (Type::Int { lo, hi }, Type::Int { lo: vl, hi: vh }) => match mkind {
-            // The chart must accept every value the interface lets others send it ...
-            VarKind::Input => vl <= lo && hi <= vh,
-            // ... and may send only values the interface promises.
-            _ => lo <= vl && vh <= hi,
-        },
-        (a, b) => a == b,
-    };
-    if !fits {
-        let rule = match (want, mkind) {
-            (Type::Int { .. }, VarKind::Input) => {
-                "an input's range must contain the interface's range"
-            }
-            (Type::Int { .. }, _) => "an output's range must lie within the interface's range",
-            _ => "the types must be the same",
-        };
+    if let Err(rule) = fits(mkind, want, v.ty) {
         let (wn, vn) = (
             crate::expr::type_name(ck.globals, want),
             crate::expr::type_name(ck.globals, v.ty),
@@ -438,6 +422,28 @@ fn member(
             .with_hint(rule.to_string()),
         );
     }
+}
+
+/// Whether a port of type `got` conforms to a declared port `want` of direction `kind`;
+/// otherwise the rule it breaks.
+pub(crate) fn fits(kind: VarKind, want: Type, got: Type) -> Result<(), &'static str> {
+    let ok = match (want, got) {
+        (Type::Int { lo, hi }, Type::Int { lo: vl, hi: vh }) => match kind {
+            // The chart must accept every value the interface lets others send it ...
+            VarKind::Input => vl <= lo && hi <= vh,
+            // ... and may send only values the interface promises.
+            _ => lo <= vl && vh <= hi,
+        },
+        (a, b) => a == b,
+    };
+    if ok {
+        return Ok(());
+    }
+    Err(match (want, kind) {
+        (Type::Int { .. }, VarKind::Input) => "an input's range must contain the interface's range",
+        (Type::Int { .. }, _) => "an output's range must lie within the interface's range",
+        _ => "the types must be the same",
+    })
 }
 
 /// The declaration of an interface port as a chart would write it.
