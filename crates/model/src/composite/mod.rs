@@ -12,6 +12,7 @@
 
 mod ports;
 mod scope;
+mod slots;
 mod visit;
 
 pub(crate) use ports::{check as check_ports, conformance};
@@ -77,6 +78,20 @@ pub(crate) fn flatten(file: &ast::File, diags: &mut Vec<Diagnostic>) -> Option<F
             _ => None,
         })
         .collect();
+    let interfaces: HashSet<&str> = file
+        .items
+        .iter()
+        .filter_map(|i| match i {
+            ast::Item::Interface(d) => Some(d.name.name.as_str()),
+            _ => None,
+        })
+        .filter(|n| {
+            !file
+                .items
+                .iter()
+                .any(|i| matches!(i, ast::Item::Chart(c) if c.name.name == *n))
+        })
+        .collect();
     let mut out = ast::File::default();
     let mut links = Vec::new();
     let mut standalone = HashSet::new();
@@ -86,8 +101,9 @@ pub(crate) fn flatten(file: &ast::File, diags: &mut Vec<Diagnostic>) -> Option<F
         match item {
             ast::Item::System(s) => {
                 let mut f = scope::Flattener::new(&comps, &known, diags, &s.name.name);
-                let flat = f.system(s, None);
+                let mut flat = f.system(s, None);
                 links.extend(f.links);
+                slots::bind_paths(&mut flat, file, diags);
                 out.items.push(ast::Item::System(flat));
             }
             ast::Item::Component(c) => {
@@ -100,8 +116,15 @@ pub(crate) fn flatten(file: &ast::File, diags: &mut Vec<Diagnostic>) -> Option<F
                     let mut f = scope::Flattener::new(&comps, &known, diags, &c.name.name);
                     let flat = f.system(&c.body, Some(c));
                     links.extend(f.links);
-                    standalone.insert(c.name.name.clone());
-                    extra.push(ast::Item::System(flat));
+                    // A component with slots inside runs only in a system that binds them.
+                    let open = flat
+                        .instances
+                        .iter()
+                        .any(|i| interfaces.contains(i.chart.name.as_str()));
+                    if !open {
+                        standalone.insert(c.name.name.clone());
+                        extra.push(ast::Item::System(flat));
+                    }
                 }
             }
             other => out.items.push(other.clone()),

@@ -142,9 +142,15 @@ impl Parser<'_> {
         })
     }
 
-    /// `IDENT '=' IDENT [ '(' args ')' ] ';'`
+    /// `IDENT { '.' IDENT } '=' IDENT [ '(' args ')' ] ';'`: a dotted path names an instance
+    /// inside a component instance (kept as one name, `storage.feeder.home`).
     pub(super) fn binding(&mut self) -> PResult<Binding> {
-        let instance = self.expect_ident("an instance name")?;
+        let mut instance = self.expect_ident("an instance name")?;
+        while self.eat(Tok::Dot).is_some() {
+            let next = self.expect_ident("an instance name after `.`")?;
+            instance.name = format!("{}.{}", instance.name, next.name);
+            instance.span = instance.span.to(next.span);
+        }
         self.expect(Tok::Assign, "after the instance name")?;
         let chart = self.expect_ident("a chart name after `=`")?;
         let args = if self.at(Tok::LParen) {
