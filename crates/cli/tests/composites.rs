@@ -215,3 +215,36 @@ fn configurations_swap_a_composite_and_a_slot_inside_one() {
         assert_eq!(cell(config, "never_both").0, "proved", "{config}");
     }
 }
+
+#[test]
+fn synthesis_accepts_a_parameterised_plant_chart() {
+    let dir = std::env::temp_dir().join(format!("statecheck-psynth-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).expect("temp dir");
+    let sup = dir.join("sup.sc").to_string_lossy().into_owned();
+    let (code, out, err) = run(&[
+        "synth",
+        "tests/components/synth_params.sc",
+        "--system",
+        "S",
+        "-o",
+        &sup,
+    ]);
+    assert_eq!(code, 0, "{out}{err}");
+    // By hand (the file's comment): 2 states, 2 transitions, `start` always allowed.
+    let text = format!("{out}{err}");
+    assert!(
+        text.contains("supervisor: 2 states, 2 transitions"),
+        "{text}"
+    );
+    assert!(text.contains("start: true"), "{text}");
+    let (code, out, err) = run(&[
+        "verify",
+        &sup,
+        "--plant",
+        "tests/components/synth_params.sc",
+        "--plant-system",
+        "S",
+    ]);
+    assert_eq!(code, 0, "{out}{err}");
+    let _ = std::fs::remove_dir_all(&dir);
+}

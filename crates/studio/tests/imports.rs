@@ -27,7 +27,12 @@ fn imports_are_followed_through_the_library_path() {
     assert!(
         loaded.model.charts.iter().any(|c| c.name == "Sensor"),
         "{:?}",
-        loaded.model.charts.iter().map(|c| &c.name).collect::<Vec<_>>()
+        loaded
+            .model
+            .charts
+            .iter()
+            .map(|c| &c.name)
+            .collect::<Vec<_>>()
     );
 }
 
