@@ -107,6 +107,14 @@ system Cell {
   connect storage.retracted -> ctrl.retracted;
   connect storage.empty -> ctrl.empty;
   order storage, ctrl;
+  // Once the magazine is empty the cylinder never comes back home (pos 0): the observer
+  // reads instances inside components by path.
+  observer EmptyStaysOut {
+    initial Loaded;
+    state Loaded { on [in(storage.magazine.Empty)] -> Watching; }
+    state Watching { on [storage.feeder.cyl.pos == 0] -> error; }
+    state error;
+  }
   reachable done: in(ctrl.Done);
   invariant pos_bounded: storage.feeder.pos <= 3;
   reachable half_way: storage.feeder.cyl.pos == 2 && storage.magazine.count == 1;

@@ -73,6 +73,14 @@ system Cell {
   order storage_feeder_cyl, storage_feeder_front, storage_feeder_rear, storage_magazine, ctrl;
   invariant storage_feeder_sensors_exclusive:
     !(storage_feeder_front.hit && storage_feeder_rear.hit);
+  // Once the magazine is empty the cylinder never comes back home (pos 0): the observer
+  // reads instances inside components by path.
+  observer EmptyStaysOut {
+    initial Loaded;
+    state Loaded { on [in(storage_magazine.Empty)] -> Watching; }
+    state Watching { on [storage_feeder_cyl.pos == 0] -> error; }
+    state error;
+  }
   reachable done: in(ctrl.Done);
   invariant pos_bounded: storage_feeder_cyl.pos <= 3;
   reachable half_way: storage_feeder_cyl.pos == 2 && storage_magazine.count == 1;

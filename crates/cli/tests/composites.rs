@@ -84,6 +84,9 @@ fn a_two_level_composite_verifies_like_its_hand_flattened_system() {
     // `take`, when ctrl is back in Push, which ignores it: Done is never entered.
     assert_eq!(verdict("storage_feeder_sensors_exclusive").0, "proved");
     assert_eq!(verdict("done").0, "unreachable");
+    // The observer reads `storage.magazine` and `storage.feeder.cyl` by path: the magazine is
+    // Empty from tick 13 (pos 1), the cylinder goes on 2, 3, 2, 1 and is home (0) in tick 18.
+    assert_eq!(verdict("EmptyStaysOut"), ("violated", Some(18)));
     // The composite's inner property keeps its path.
     let (_, out, _) = run(&["verify", "--engine", "explicit", "--json", CELL]);
     assert!(

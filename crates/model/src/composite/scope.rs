@@ -133,6 +133,20 @@ impl<'a, 'd> Flattener<'a, 'd> {
             instances: std::mem::take(&mut self.scopes[top].order),
             span: s.order.first().map_or(s.name.span, |o| o.span),
         }];
+        // Observers read instances by path through the components, like the properties.
+        for o in &mut out.observers {
+            let mut paths: Vec<ast::Path> = Vec::new();
+            let mut collect = |x: &mut ast::Path| paths.push(x.clone());
+            Paths { f: &mut collect }.chart(o);
+            let mut rewritten = paths.iter().map(|x| self.read(top, x)).collect::<Vec<_>>();
+            rewritten.reverse();
+            let mut put = |x: &mut ast::Path| {
+                if let Some(Some(n)) = rewritten.pop() {
+                    *x = n;
+                }
+            };
+            Paths { f: &mut put }.chart(o);
+        }
         for r in &mut out.requirements {
             let mut e = match &mut r.kind {
                 ast::RequirementKind::Never(e) => e.clone(),

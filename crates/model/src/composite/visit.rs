@@ -87,4 +87,90 @@ impl Paths<'_> {
             }
         }
     }
+
+    /// Every expression of an observer chart: initial values, actions, guards, delays,
+    /// choices and its properties.
+    pub fn chart(&mut self, c: &mut ast::Chart) {
+        for v in &mut c.vars {
+            if let Some(e) = &mut v.init {
+                self.expr(e);
+            }
+        }
+        self.body(&mut c.body);
+        for p in &mut c.properties {
+            self.property(p);
+        }
+    }
+
+    fn block(&mut self, b: &mut ast::Block) {
+        for s in &mut b.stmts {
+            match s {
+                ast::Stmt::Assign { value, .. } => self.expr(value),
+                ast::Stmt::Raise { .. } => {}
+                ast::Stmt::If {
+                    cond,
+                    then,
+                    otherwise,
+                    ..
+                } => {
+                    self.expr(cond);
+                    self.block(then);
+                    if let Some(o) = otherwise {
+                        self.block(o);
+                    }
+                }
+            }
+        }
+    }
+
+    fn body(&mut self, b: &mut ast::StateBody) {
+        for blk in b.entry.iter_mut().chain(&mut b.during).chain(&mut b.exit) {
+            self.block(blk);
+        }
+        for i in &mut b.initial {
+            if let Some(a) = &mut i.action {
+                self.block(a);
+            }
+        }
+        for s in &mut b.states {
+            self.body(&mut s.body);
+        }
+        for r in &mut b.regions {
+            self.body(&mut r.body);
+        }
+        for j in &mut b.junctions {
+            self.branches(&mut j.branches);
+        }
+        for t in &mut b.transitions {
+            if let Some(ast::Trigger::After { delay, .. }) = &mut t.trigger {
+                match delay {
+                    ast::Delay::Ticks(e) => self.expr(e),
+                    ast::Delay::Time(d) => self.expr(&mut d.amount),
+                }
+            }
+            if let Some(g) = &mut t.guard {
+                self.expr(g);
+            }
+            if let Some(a) = &mut t.action {
+                self.block(a);
+            }
+            if let Some(ast::Target::Choice { branches, .. }) = &mut t.target {
+                self.branches(branches);
+            }
+        }
+    }
+
+    fn branches(&mut self, bs: &mut [ast::Branch]) {
+        for b in bs {
+            if let Some(g) = &mut b.guard {
+                self.expr(g);
+            }
+            if let Some(a) = &mut b.action {
+                self.block(a);
+            }
+            if let ast::Target::Choice { branches, .. } = &mut b.target {
+                self.branches(branches);
+            }
+        }
+    }
 }
