@@ -12,6 +12,7 @@ mod chart;
 pub mod components;
 mod expr;
 pub mod formula;
+pub mod hybrid;
 pub mod imports;
 pub mod lint;
 pub mod model;
@@ -41,6 +42,12 @@ pub fn check(file: &ast::File) -> (Model, Vec<Diagnostic>) {
     let mut early = Vec::new();
     collect_globals(file, &mut globals, &mut early);
     check_consts_and_fns(file, &mut globals, &mut early);
+    // Continuous variables become grid variables, modes and timers (`hybrid/`).
+    let discretized = hybrid::discretize(file, &globals, &mut early);
+    let file = match &discretized {
+        Some(d) => &d.file,
+        None => file,
+    };
     // Systems with configurations become one system per configuration (`components.rs`).
     let configured = components::expand(file, &mut early);
     let (file, sys_origins) = match &configured {
@@ -208,6 +215,16 @@ pub fn check(file: &ast::File) -> (Model, Vec<Diagnostic>) {
         components::suppress_slot_cascades(file, &mut diags);
     }
     (model, diags)
+}
+
+/// The file's constants, enums, functions and tick, with their diagnostics dropped (for
+/// passes that run outside [`check`]).
+pub(crate) fn globals_of(file: &ast::File) -> Globals {
+    let mut globals = Globals::default();
+    let mut sink = Vec::new();
+    collect_globals(file, &mut globals, &mut sink);
+    check_consts_and_fns(file, &mut globals, &mut sink);
+    globals
 }
 
 fn collect_globals(file: &ast::File, g: &mut Globals, diags: &mut Vec<Diagnostic>) {
