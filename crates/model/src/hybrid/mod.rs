@@ -8,6 +8,7 @@
 //! see only that chart. The generated code is written once, as text (`emit.rs`): it is parsed
 //! into the tree here and printed in place by [`discretized_source`].
 
+pub mod analyse;
 mod critical;
 mod emit;
 mod modes;

@@ -29,6 +29,9 @@ pub struct Plan {
     pub coarse: bool,
     /// The motion modes; mode `m` is `modes[m - 1]` (0: standing still).
     pub modes: Vec<Mode>,
+    /// The points the model names: range ends, initial value, sensor bounds and compared
+    /// constants inside the range (all on the grid unless `coarse`).
+    pub critical: Vec<i64>,
     /// The sensors: output name and range.
     pub sensors: Vec<(String, i64, i64)>,
     /// The `continuous` declaration.
@@ -162,6 +165,7 @@ impl Cx<'_, '_> {
                         init: i,
                         points: Vec::new(),
                         forced: Vec::new(),
+                        critical: Vec::new(),
                         coarse: false,
                         modes: Vec::new(),
                         sensors: Vec::new(),
@@ -282,6 +286,22 @@ impl Cx<'_, '_> {
         grid: Option<(Option<i64>, Span)>,
         critical: &[(String, i64)],
     ) {
+        let mut named = vec![p.lo, p.hi, p.init];
+        named.extend(
+            critical
+                .iter()
+                .filter(|(v, c)| *v == p.var && *c > p.lo && *c < p.hi)
+                .map(|(_, c)| *c),
+        );
+        named.extend(
+            p.sensors
+                .iter()
+                .flat_map(|(_, l, h)| [*l, *h])
+                .filter(|x| *x >= p.lo && *x <= p.hi),
+        );
+        named.sort_unstable();
+        named.dedup();
+        p.critical = named;
         let mut pts = vec![p.lo, p.hi, p.init];
         let mut equal = Vec::new();
         match grid {
