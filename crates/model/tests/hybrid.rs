@@ -24,8 +24,11 @@ fn r(n: i128, d: i128) -> Ratio {
     Ratio::new(n, d).unwrap_or(Ratio::ZERO)
 }
 
-/// (point, seconds, ticks) of each reading of each moving state.
-fn table(p: &hybrid::Plan, tick: Ratio) -> Vec<(String, Vec<(i64, Ratio, Ratio)>)> {
+/// A reading: (point, seconds, ticks).
+type Row = (i64, Ratio, Ratio);
+
+/// The readings of each moving state.
+fn table(p: &hybrid::Plan, tick: Ratio) -> Vec<(String, Vec<Row>)> {
     analyse::readings(p, tick)
         .into_iter()
         .map(|m| {
