@@ -138,7 +138,12 @@ fn events(
             return Err(Exit(1).into());
         }
     };
-    let run = statecheck_sim::run(&program, &mut ScenarioInputs::new(&sc), Options::default());
+    // The motion is followed over the whole scenario, past any property violation.
+    let opts = Options {
+        keep_going: true,
+        ..Options::default()
+    };
+    let run = statecheck_sim::run(&program, &mut ScenarioInputs::new(&sc), opts);
     let mut rows = Vec::new();
     for inst in &program.instances {
         let Some(chart) = loaded.model.charts.get(inst.chart as usize) else {
