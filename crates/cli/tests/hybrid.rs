@@ -4,7 +4,6 @@
 //! and verified again to the same answers; `analyse` against hand-computed times.
 
 use serde_json::Value;
-use std::path::PathBuf;
 use std::process::Command;
 
 const BIN: &str = env!("CARGO_BIN_EXE_statecheck");
