@@ -24,10 +24,19 @@ fn run(args: &[&str]) -> (i32, String, String) {
     )
 }
 
-/// (property, verdict, tick) of `verify --json` with one engine.
+/// (property, verdict, tick) of `verify --json` with one engine on system `Loop`.
 fn verdicts(file: &str, engine: &str, props: &[&str]) -> Vec<(String, String, Option<u64>)> {
+    verdicts_of(file, "Loop", engine, props)
+}
+
+fn verdicts_of(
+    file: &str,
+    system: &str,
+    engine: &str,
+    props: &[&str],
+) -> Vec<(String, String, Option<u64>)> {
     let mut args = vec![
-        "verify", file, "--system", "Loop", "--engine", engine, "--json",
+        "verify", file, "--system", system, "--engine", engine, "--json",
     ];
     for p in props {
         args.extend(["--property", p]);
@@ -162,4 +171,25 @@ fn analyse_follows_a_scenario_exactly() {
         .map(|(p, s, t, k)| (p, s.to_string(), t.to_string(), k, "exact".to_string()))
         .collect();
     assert_eq!(got, want);
+}
+
+#[test]
+fn speeds_from_chart_parameters() {
+    // tests/hybrid/params.sc: light at_end in tick 39, heavy in tick 96.
+    let got = verdicts_of(
+        &path("params.sc"),
+        "Pair",
+        "explicit",
+        &["light_end", "heavy_end"],
+    );
+    assert_eq!(
+        got,
+        vec![
+            ("light_end".to_string(), "violated".to_string(), Some(39)),
+            ("heavy_end".to_string(), "violated".to_string(), Some(96)),
+        ]
+    );
+    let (code, _, err) = run(&["check", &path("params.sc")]);
+    assert_eq!(code, 0, "{err}");
+    assert!(!err.contains("Warning"), "{err}");
 }

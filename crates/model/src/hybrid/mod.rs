@@ -80,8 +80,33 @@ fn has_hybrid(body: &ast::StateBody) -> bool {
         || body.regions.iter().any(|r| has_hybrid(&r.body))
 }
 
-/// The plans of every chart of `file` with continuous variables, and the diagnostics.
-fn plan_file(file: &ast::File, globals: &Globals) -> (Vec<(usize, Vec<Plan>)>, Vec<Diagnostic>) {
+/// What a pass does with a chart.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum Treat {
+    /// Discretize it.
+    Discretize,
+    /// Leave it as written (a parameterised chart, discretized per copy after expansion).
+    Leave,
+    /// Declare its variables only, without diagnostics (a copy with placeholder values).
+    DeclareOnly,
+}
+
+/// The first pass, on the file as written: charts with parameters wait for their copies.
+pub(crate) fn before_expansion(c: &ast::Chart, _index: usize) -> Treat {
+    if c.params.is_empty() {
+        Treat::Discretize
+    } else {
+        Treat::Leave
+    }
+}
+
+/// The plans of every chart of `file` with continuous variables (`treat` gets each chart and
+/// its index among the charts), and the diagnostics.
+fn plan_file(
+    file: &ast::File,
+    globals: &Globals,
+    treat: &dyn Fn(&ast::Chart, usize) -> Treat,
+) -> (Vec<(usize, Vec<Plan>, Treat)>, Vec<Diagnostic>) {
     let mut cx = Cx {
         ck: ExprChecker {
             globals,
@@ -96,14 +121,28 @@ fn plan_file(file: &ast::File, globals: &Globals) -> (Vec<(usize, Vec<Plan>)>, V
         file_diags: Vec::new(),
     };
     let mut out = Vec::new();
+    let mut chart_index = 0;
     for (i, item) in file.items.iter().enumerate() {
+        if let ast::Item::Chart(_) = item {
+            chart_index += 1;
+        }
         match item {
             ast::Item::Chart(c) if has_hybrid(&c.body) => {
+                let how = treat(c, chart_index - 1);
+                if how == Treat::Leave {
+                    continue;
+                }
+                let before = cx.file_diags.len();
+                let sink_before = cx.ck.sink.diags.len();
                 let plans = cx.plan_chart(c);
                 for p in &plans {
                     cx.names_free(c, p);
                 }
-                out.push((i, plans));
+                if how == Treat::DeclareOnly {
+                    cx.file_diags.truncate(before);
+                    cx.ck.sink.diags.truncate(sink_before);
+                }
+                out.push((i, plans, how));
             }
             ast::Item::System(s) => {
                 for o in &s.observers {
@@ -151,26 +190,44 @@ impl Cx<'_, '_> {
 pub(crate) fn discretize(
     file: &ast::File,
     globals: &Globals,
+    treat: &dyn Fn(&ast::Chart, usize) -> Treat,
     diags: &mut Vec<Diagnostic>,
 ) -> Option<Discretized> {
     let any = file.items.iter().any(|i| match i {
-        ast::Item::Chart(c) => has_hybrid(&c.body),
+        ast::Item::Chart(c) => {
+            has_hybrid(&c.body) && (c.params.is_empty() || treat(c, 0) != Treat::Leave)
+        }
         ast::Item::System(s) => s.observers.iter().any(|o| has_hybrid(&o.body)),
         _ => false,
     });
     if !any {
         return None;
     }
-    let (plans, ds) = plan_file(file, globals);
+    let (plans, ds) = plan_file(file, globals, treat);
     let failed = ds.iter().any(Diagnostic::is_error);
     diags.extend(ds);
+    // A copy with placeholder values gets the whole discretization when its values allow it
+    // (its diagnostics were dropped), so that it reads like the real copies.
+    let placeholder_ok = {
+        let mut probe = Vec::new();
+        let (_, ds) = plan_file(file, globals, &|c, i| match treat(c, i) {
+            Treat::DeclareOnly => Treat::Discretize,
+            _ => Treat::Leave,
+        });
+        probe.extend(ds);
+        !probe.iter().any(Diagnostic::is_error)
+    };
     let mut out = file.clone();
-    for (i, ps) in plans {
+    for (i, ps, how) in plans {
         let Some(ast::Item::Chart(c)) = out.items.get_mut(i) else {
             continue;
         };
+        let motion = match how {
+            Treat::Discretize => !failed,
+            _ => placeholder_ok,
+        };
         for p in &ps {
-            apply(c, p, !failed);
+            apply(c, p, motion);
         }
         strip(&mut c.body);
     }
@@ -182,6 +239,22 @@ pub(crate) fn discretize(
         }
     }
     Some(Discretized { file: out })
+}
+
+/// The spans of the `continuous` declarations of `file`: generated code carries them, and a
+/// design-rule warning about generated code is no use to the user (it is dropped).
+pub(crate) fn generated_spans(file: &ast::File) -> Vec<Span> {
+    let mut out = Vec::new();
+    for item in &file.items {
+        if let ast::Item::Chart(c) = item {
+            for h in &c.body.hybrid {
+                if let HybridElem::Continuous { span, .. } = h {
+                    out.push(*span);
+                }
+            }
+        }
+    }
+    out
 }
 
 /// Remove every hybrid element under `body`.
@@ -249,13 +322,13 @@ fn apply(c: &mut ast::Chart, p: &Plan, motion: bool) {
 /// the diagnostics when the file's hybrid elements have errors.
 pub fn plans(file: &ast::File) -> Result<Vec<ChartPlans>, Vec<Diagnostic>> {
     let globals = crate::globals_of(file);
-    let (plans, diags) = plan_file(file, &globals);
+    let (plans, diags) = plan_file(file, &globals, &before_expansion);
     if diags.iter().any(Diagnostic::is_error) {
         return Err(diags);
     }
     Ok(plans
         .into_iter()
-        .filter_map(|(i, ps)| match file.items.get(i) {
+        .filter_map(|(i, ps, _)| match file.items.get(i) {
             Some(ast::Item::Chart(c)) => Some(ChartPlans {
                 chart: c.name.name.clone(),
                 plans: ps,
@@ -270,12 +343,12 @@ pub fn plans(file: &ast::File) -> Result<Vec<ChartPlans>, Vec<Diagnostic>> {
 /// elements have errors. A file without continuous variables comes back formatted.
 pub fn discretized_source(source: &str, file: &ast::File) -> Result<String, Vec<Diagnostic>> {
     let globals = crate::globals_of(file);
-    let (plans, diags) = plan_file(file, &globals);
+    let (plans, diags) = plan_file(file, &globals, &before_expansion);
     if diags.iter().any(Diagnostic::is_error) {
         return Err(diags);
     }
     let mut edits: Vec<(usize, usize, String)> = Vec::new();
-    for (i, ps) in &plans {
+    for (i, ps, _) in &plans {
         let Some(ast::Item::Chart(c)) = file.items.get(*i) else {
             continue;
         };
