@@ -100,13 +100,16 @@ pub(crate) fn before_expansion(c: &ast::Chart, _index: usize) -> Treat {
     }
 }
 
+/// The plans of one chart: its item index, its plans, and how it was treated.
+type ChartEntry = (usize, Vec<Plan>, Treat);
+
 /// The plans of every chart of `file` with continuous variables (`treat` gets each chart and
 /// its index among the charts), and the diagnostics.
 fn plan_file(
     file: &ast::File,
     globals: &Globals,
     treat: &dyn Fn(&ast::Chart, usize) -> Treat,
-) -> (Vec<(usize, Vec<Plan>, Treat)>, Vec<Diagnostic>) {
+) -> (Vec<ChartEntry>, Vec<Diagnostic>) {
     let mut cx = Cx {
         ck: ExprChecker {
             globals,
