@@ -210,3 +210,29 @@ plant chart P {
     // `der` of an unknown variable.
     assert_eq!(codes, vec!["E0172"; 4], "{e:?}");
 }
+
+#[test]
+fn a_motion_switched_between_grid_points_is_reported() {
+    // Up at 2 (2.5 per 1.25 s tick) for one tick: the exact position is 2.5, mid-cell; the
+    // discretized one stays 0. Then down at 4: exactly, 0 is reached 2.5 / 4 = 0.625 s
+    // later, at 1.875 s = 1.5 ticks, between ticks; the model "reaches" 0 at once (it never
+    // left it), in tick 2.
+    let src = "tick 1250 ms;
+plant chart P {
+  continuous x: [0 .. 10] = 0;
+  grid x 2;
+  initial Up;
+  state Up { der(x) = 2; }
+  state Down { der(x) = -4; }
+}";
+    let c = plans(src);
+    let p = &c[0].plans[0];
+    let modes = [0, 1, 2, 2];
+    let pos = [0, 0, 0, 0];
+    let ev = analyse::events(p, r(5, 4), &modes, &pos);
+    assert_eq!(ev.len(), 1, "{ev:?}");
+    assert_eq!((ev[0].point, ev[0].state.as_str()), (0, "Down"));
+    assert_eq!(ev[0].seconds, r(15, 8));
+    assert_eq!(ev[0].ticks, r(3, 2));
+    assert_eq!(ev[0].model_tick, Some(2));
+}
