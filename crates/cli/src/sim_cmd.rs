@@ -390,7 +390,7 @@ fn describe_stop(
 
 /// Scenario errors as diagnostics (byte spans from their 1-based line and column), so that
 /// they render like the model's and follow `--message-format`.
-fn scenario_diagnostics(
+pub(crate) fn scenario_diagnostics(
     text: &str,
     errs: &[scenario::ScenarioError],
 ) -> Vec<statecheck_base::Diagnostic> {
