@@ -20,6 +20,7 @@
 //! reported `unknown` with the reason.
 
 mod comm;
+mod connect;
 mod expand;
 mod search;
 mod store;
@@ -116,6 +117,9 @@ impl std::fmt::Display for Error {
 
 impl std::error::Error for Error {}
 
+/// Without a time limit, how long a process waits for the others to connect.
+pub const CONNECT_TIMEOUT: std::time::Duration = std::time::Duration::from_secs(120);
+
 /// What every worker of a process shares.
 pub(crate) struct Shared {
     pub program: Program,
@@ -164,26 +168,25 @@ pub fn verify(program: &Program, opts: &Options) -> Result<DistReport, Error> {
         meter: (0..opts.workers).map(|_| AtomicU64::new(0)).collect(),
         start,
     });
-    let communication = if opts.hosts.is_empty() {
-        timely::CommunicationConfig::Process(opts.workers)
-    } else {
-        timely::CommunicationConfig::Cluster {
-            threads: opts.workers,
-            process: opts.process,
-            addresses: opts.hosts.clone(),
-            report: false,
-            zerocopy: false,
-        }
-    };
-    let config = timely::Config {
-        communication,
-        worker: timely::WorkerConfig::default(),
-    };
     let sh = Arc::clone(&shared);
-    let guards =
-        timely::execute(config, move |worker| search::run(worker, &sh)).map_err(|e| Error {
-            kind: ErrorKind::Network(e),
-        })?;
+    let net = |e: String| Error {
+        kind: ErrorKind::Network(e),
+    };
+    let worker = timely::WorkerConfig::default();
+    let run = move |w: &mut timely::worker::Worker| search::run(w, &sh);
+    let guards = if opts.hosts.is_empty() {
+        let config = timely::Config {
+            communication: timely::CommunicationConfig::Process(opts.workers),
+            worker,
+        };
+        timely::execute(config, run).map_err(net)?
+    } else {
+        // The other processes get the run's time limit to connect, or CONNECT_TIMEOUT.
+        let deadline = start + opts.check.timeout.unwrap_or(CONNECT_TIMEOUT);
+        let (builders, guard) =
+            connect::allocators(&opts.hosts, opts.process, opts.workers, deadline).map_err(net)?;
+        timely::execute::execute_from(builders, guard, worker, run).map_err(net)?
+    };
     let mut first = None;
     for r in guards.join() {
         let out = r.map_err(|e| Error {

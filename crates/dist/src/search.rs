@@ -155,6 +155,9 @@ pub(crate) fn run(worker: &mut Worker, sh: &Shared) -> DistReport {
     let (mut states, mut transitions, mut depth) = (1u64, 0u64, 0u64);
     let mut process_peak = vec![0u64; dist.processes];
     let mut lo = 0usize;
+    // The successors this worker already sent in the layer: each is sent once (wide-branching
+    // models reach the same few successors by many input vectors).
+    let mut sent = Store::new(words);
     let meter = &sh.meter[local];
     let process_bytes = || {
         sh.meter
@@ -168,6 +171,7 @@ pub(crate) fn run(worker: &mut Worker, sh: &Shared) -> DistReport {
         }
         let hi = store.len();
         let mut open = pending.clone();
+        sent.clear();
         let mut finds: Vec<(u64, u64, u64)> = Vec::new();
         let mut bufs: Vec<(Vec<u64>, Vec<u32>)> = (0..peers).map(|_| Default::default()).collect();
         let mut layer_transitions = 0u64;
@@ -175,7 +179,7 @@ pub(crate) fn run(worker: &mut Worker, sh: &Shared) -> DistReport {
         let mut limit: Option<Limit> = None;
         for i in lo..hi {
             if (i - lo).is_multiple_of(CHECK_EVERY) {
-                let held = store.bytes() + buf_bytes(&bufs) + succ_ch.inbox_bytes();
+                let held = store.bytes() + sent.bytes() + buf_bytes(&bufs) + succ_ch.inbox_bytes();
                 meter.store(held, Ordering::Relaxed);
                 limit = local_limit(sh, process_bytes());
                 if limit.is_some() {
@@ -189,7 +193,12 @@ pub(crate) fn run(worker: &mut Worker, sh: &Shared) -> DistReport {
                 &mut open,
                 &mut |prop, input| finds.push((prop as u64, u64::from(pos), u64::from(input))),
                 &mut |s, input| {
-                    let b = &mut bufs[owner(hash(s), peers)];
+                    let h = hash(s);
+                    // (A full cache sends everything rather than lose a state.)
+                    if !sent.full() && !sent.insert(s, h, [0; 3]) {
+                        return;
+                    }
+                    let b = &mut bufs[owner(h, peers)];
                     b.0.extend_from_slice(s);
                     b.1.extend([me as u32, pos, input]);
                 },
@@ -229,7 +238,7 @@ pub(crate) fn run(worker: &mut Worker, sh: &Shared) -> DistReport {
         if store.full() && limit.is_none() {
             limit = opts.max_memory.map(Limit::Memory).or(Some(Limit::Stopped));
         }
-        let held = store.bytes();
+        let held = store.bytes() + sent.bytes();
         meter.store(held, Ordering::Relaxed);
         if limit.is_none() {
             limit = local_limit(sh, process_bytes());

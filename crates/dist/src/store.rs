@@ -87,6 +87,13 @@ impl Store {
         true
     }
 
+    /// Forget every state (keeping the memory).
+    pub fn clear(&mut self) {
+        self.arena.clear();
+        self.parents.clear();
+        self.table.clear();
+    }
+
     /// True when no more states fit (indices are `u32`, the last one reserved).
     pub fn full(&self) -> bool {
         self.parents.len() >= (ROOT - 1) as usize
