@@ -45,6 +45,10 @@ system WDSOrderings {
   connect f.offer -> tr.offer;
   order pn, mag, hs, es, stc, f, tc, tr;
 
+  // START from tick 1 on: when START is pressed only shifts the whole run, and pinning it
+  // leaves one run per configuration (the SAT engines then decide each at once).
+  assume pn.start;
+
   configuration ll_L { mag = Magazine(sequence = Order.LL); stc = StorageControllerEarlyAllow; tr = LTransfer; hs = Sensor(0, 5); }
   configuration ll_D { mag = Magazine(sequence = Order.LL); stc = StorageControllerEarlyAllow; tr = DTransfer; hs = Sensor(0, 5); }
   configuration lh_L { mag = Magazine(sequence = Order.LH); stc = StorageControllerEarlyAllow; tr = LTransfer; hs = Sensor(0, 5); }
