@@ -10,16 +10,21 @@
 # `states_per_s` (the native successor generator's build included).
 # Usage: scripts/bench_spin.sh [SECONDS] [THREADS]   (defaults 600, all cores; SPIN is
 #        single-threaded: pass 1 for a per-core comparison). Needs gcc, spin, python3.
+#        STATECHECK=path/to/statecheck uses that binary instead of building one.
 # Models: the FAM alone (FamAloneSmall) and the closed loop master + 1 FAM (FamSystem);
 #         override with MODELS="file.sc:System file2.sc:System2".
 set -eu
 ROOT=$(cd "$(dirname "$0")/.." && pwd)
 LIMIT=${1:-600}
-THREADS=${2:-0}
+THREADS=${2:-$(nproc)}
 MODELS=${MODELS:-"$ROOT/examples/fam/fam_alone.sc:FamAloneSmall $ROOT/examples/fam/fam_system.sc:FamSystem"}
 export CARGO_TARGET_DIR=${CARGO_TARGET_DIR:-$ROOT/target}
-cargo build --release -q -p statecheck-cli --manifest-path "$ROOT/Cargo.toml"
-SC=$CARGO_TARGET_DIR/release/statecheck
+if [ -n "${STATECHECK:-}" ]; then
+  SC=$STATECHECK   # a statecheck binary already built (release)
+else
+  cargo build --release -q -p statecheck-cli --manifest-path "$ROOT/Cargo.toml"
+  SC=$CARGO_TARGET_DIR/release/statecheck
+fi
 TMP=$(mktemp -d "${TMPDIR:-/tmp}/statecheck-spin.XXXXXX")
 trap 'rm -rf "$TMP"' EXIT
 printf '%-28s %-9s %12s %14s %10s %8s  %s\n' model checker states states/s bytes/st time_s finished
@@ -28,11 +33,13 @@ for entry in $MODELS; do
   rc=0
   "$SC" verify "$model" --system "$system" --engine explicit --threads "$THREADS" \
     --timeout "$LIMIT" --json > "$TMP/v.json" 2>/dev/null || rc=$?
-  "$SC" export promela "$model" --system "$system" -o "$TMP/m.pml"
-  (cd "$TMP" && spin -a m.pml > /dev/null \
-    && gcc -O2 -DSAFETY -DNOFAIR -DMEMLIM=16000 -o pan pan.c 2> /dev/null)
   s=$(date +%s.%N)
-  (cd "$TMP" && timeout -s INT "$LIMIT" ./pan -A -m100000000 > pan.out 2>&1) || true
+  if "$SC" export promela "$model" --system "$system" -o "$TMP/m.pml" 2> "$TMP/pan.out"; then
+    (cd "$TMP" && spin -a m.pml > /dev/null \
+      && gcc -O2 -DSAFETY -DNOFAIR -DMEMLIM=16000 -o pan pan.c 2> /dev/null)
+    s=$(date +%s.%N)
+    (cd "$TMP" && timeout -s INT "$LIMIT" ./pan -A -m10000000 > pan.out 2>&1) || true
+  fi
   wall=$(echo "$(date +%s.%N) - $s" | bc)
   python3 - "$TMP/v.json" "$TMP/pan.out" "$name" "$wall" "$rc" <<'PY'
 import json, re, sys
@@ -56,7 +63,7 @@ t = re.search(r"pan: elapsed time ([\d.e+]+) seconds", pan_text)
 secs = float(t.group(1)) if t else wall
 rate = float(rate.group(1)) if rate else theirs / max(secs, 1e-9)
 vec = re.search(r"State-vector (\d+) byte", pan_text)
-mem = re.search(r"([\d.]+)\s+total actual memory usage", pan_text)
+mem = re.search(r"([\d.]+)\s+actual memory usage for states", pan_text)
 bps = float(mem.group(1)) * 1048576 / max(theirs, 1) if mem else float("nan")
 done = "Interrupted" not in pan_text and "max search depth too small" not in pan_text
 print(row.format(name, "SPIN", theirs, rate, bps, secs,
