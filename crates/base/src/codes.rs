@@ -74,7 +74,7 @@ pub const CODES: &[CodeInfo] = &[
     code("E0116", "cannot `raise` this event", "Only the chart's output and local events can be raised; inputs come from the environment.", "language.md"),
     code("E0117", "`after` of zero ticks", "`after(n)` must wait at least one tick.", "language.md"),
     code("E0119", "junction loop", "Following junction branches can lead back to the same junction within one transition, which would never end.", "language.md"),
-    code("E0120", "duration without a tick length", "A delay in time units (`after(3 s)`) needs the file's `tick` declaration, or it does not divide into whole ticks.", "language.md"),
+    code("E0120", "duration without a tick length", "A delay or bound in time units (`after(3 s)`, `within 2 s`) needs the file's `tick` declaration, and must divide into whole ticks.", "language.md"),
     code("E0121", "observer without `error` state", "An observer reports a violation by entering its top-level state `error`; declare one.", "properties.md"),
     code("E0122", "bad `order`", "`order` lists each instance once and never observers (which always run last).", "language.md"),
     code("E0123", "bad connection", "A connection is `connect instance.output -> instance.input;` between existing ports of one type; `[*]` only on the receiving side; an input is driven at most once.", "language.md"),

@@ -10,6 +10,7 @@
 mod cascade;
 mod chart;
 pub mod components;
+mod duration;
 mod expr;
 pub mod formula;
 pub mod hybrid;

@@ -833,14 +833,14 @@ pub enum PropertyKind {
         /// Some reachable state satisfies it.
         expr: Expr,
     },
-    /// `respond NAME: trigger => response within N;`
+    /// `respond NAME: trigger => response within N;` (or `within 2 s` with a declared tick)
     Respond {
         /// When this holds ...
         trigger: Expr,
         /// ... this must hold within `within` ticks (0 = the same tick).
         response: Expr,
-        /// The bound in ticks.
-        within: Expr,
+        /// The bound: a constant tick count, or a duration converted with the file's `tick`.
+        within: Delay,
     },
     /// `respond NAME: trigger => response;` (no bound: the response must come eventually).
     RespondEventually {

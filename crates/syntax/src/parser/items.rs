@@ -561,7 +561,7 @@ impl Parser<'_> {
                     self.report(d);
                     return Err(Failed);
                 }
-                let within = self.expr();
+                let within = self.delay();
                 PropertyKind::Respond {
                     trigger,
                     response,
