@@ -130,21 +130,15 @@ pub fn during(p: &Plan) -> String {
             );
         }
         let _ = writeln!(s, " else {{ {} = 0; {} = 0; }}", n.mode, n.ticks);
-        let mut first = true;
         for (i, m) in p.modes.iter().enumerate() {
             let body = motion(p, i, &n);
             if body.is_empty() {
                 continue;
             }
-            let _ = writeln!(
-                s,
-                "{}if {} == {} {{\n{body}}}",
-                if first { "" } else { "else " },
-                n.mode,
-                i + 1
-            );
+            // Sequential `if`s, not an `else if` chain: the motion never changes the mode, and
+            // a long chain would nest past the parser's depth limit.
+            let _ = writeln!(s, "if {} == {} {{\n{body}}}", n.mode, i + 1);
             let _ = m;
-            first = false;
         }
     }
     // A sensor is sampled exactly at every tick for constant speeds: after a motion left a
@@ -253,15 +247,13 @@ fn motion(p: &Plan, i: usize, n: &Names) -> String {
                 n.ticks, n.ticks
             );
         } else {
-            for (c, (from, to, k)) in steps.iter().enumerate() {
+            // One `if` per cell, in sequence: after a step the timer is 0 and no other cell's
+            // condition (timer >= k >= 1) holds in the same tick.
+            for (from, to, k) in &steps {
                 let _ = writeln!(
                     s,
-                    "{}if {x} == {} && {} >= {k} {{ {x} = {}; {} = 0; }}",
-                    if c == 0 { "" } else { "else " },
-                    p.points[*from],
-                    n.ticks,
-                    p.points[*to],
-                    n.ticks
+                    "if {x} == {} && {} >= {k} {{ {x} = {}; {} = 0; }}",
+                    p.points[*from], n.ticks, p.points[*to], n.ticks
                 );
             }
         }
@@ -269,29 +261,17 @@ fn motion(p: &Plan, i: usize, n: &Names) -> String {
     } else {
         let h = m.table.iter().flatten().map(|(_, k)| *k).max().unwrap_or(1);
         let _ = writeln!(s, "if {} < {h} {{ {} += 1; }}", n.ticks, n.ticks);
-        let mut first = true;
+        // Sequential `if`s: the start point does not change, and the readings of one start
+        // point are distinct ticks, so at most one holds.
         for (from, t) in m.table.iter().enumerate() {
             if t.is_empty() {
                 continue;
             }
-            let _ = write!(
-                s,
-                "{}if {} == {} {{ ",
-                if first { "" } else { "else " },
-                n.from,
-                p.points[from]
-            );
-            for (c, (to, k)) in t.iter().enumerate() {
-                let _ = write!(
-                    s,
-                    "{}if {} == {k} {{ {x} = {}; }}",
-                    if c == 0 { "" } else { " else " },
-                    n.ticks,
-                    p.points[*to]
-                );
+            let _ = write!(s, "if {} == {} {{", n.from, p.points[from]);
+            for (to, k) in t {
+                let _ = write!(s, " if {} == {k} {{ {x} = {}; }}", n.ticks, p.points[*to]);
             }
             s.push_str(" }\n");
-            first = false;
         }
     }
     s

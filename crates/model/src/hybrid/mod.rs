@@ -275,7 +275,12 @@ fn strip(body: &mut ast::StateBody) {
 /// spans are all `at`.
 fn parse_generated(decls: &str, during: &str, at: Span) -> (Vec<ast::VarDecl>, Vec<ast::Stmt>) {
     let text = format!("chart G {{\n{decls}during {{\n{during}}}\n}}\n");
-    let (f, _) = statecheck_syntax::parse(&text);
+    let (f, diags) = statecheck_syntax::parse(&text);
+    // The generated text is built to parse (no deep nesting: see `emit.rs`); if it ever did
+    // not, nothing is generated rather than something partial.
+    if diags.iter().any(Diagnostic::is_error) {
+        return (Vec::new(), Vec::new());
+    }
     let Some(ast::Item::Chart(mut c)) = f.items.into_iter().next() else {
         return (Vec::new(), Vec::new());
     };

@@ -8,6 +8,10 @@ use super::Cx;
 use statecheck_base::{Diagnostic, Span};
 use statecheck_syntax::ast::{self, HybridElem, SpeedExpr, SpeedNumber};
 
+/// The most states a variable may move in (the generated mode selection is one `if … else
+/// if …` chain, which must stay well within the parser's nesting limit).
+const MAX_MODES: usize = 100;
+
 /// The most grid points a variable with a speed profile may have (its table is quadratic).
 const MAX_PROFILE_POINTS: usize = 200;
 
@@ -60,6 +64,20 @@ impl Cx<'_, '_> {
             });
         }
         for p in plans.iter_mut() {
+            if p.modes.len() > MAX_MODES {
+                self.error(
+                    p.span,
+                    "E0172",
+                    format!(
+                        "`{}` moves in {} states, more than the {MAX_MODES} allowed",
+                        p.var,
+                        p.modes.len()
+                    ),
+                    "merge states that move alike",
+                );
+                p.modes.clear();
+                continue;
+            }
             self.tables(p);
         }
     }
