@@ -8,6 +8,7 @@
 //! (a limit was hit), 2 usage errors.
 
 mod cex;
+mod dist;
 mod live;
 mod matrix;
 mod report;
@@ -72,6 +73,18 @@ pub struct VerifyArgs {
     /// Worker threads (default: one per core).
     #[arg(long, value_name = "N")]
     threads: Option<usize>,
+    /// Distribute the explicit search over N worker threads in this process (timely
+    /// dataflow, docs/distributed.md); with --hosts, N per process. Temporal properties are
+    /// then reported `unknown`.
+    #[arg(long, value_name = "N", conflicts_with_all = ["all_configs", "certificate", "check_certificate"])]
+    workers: Option<usize>,
+    /// With --workers: the host file, one `host:port` per process in process order (timely's
+    /// convention); every process runs the same command with its own --process.
+    #[arg(long, value_name = "FILE", requires = "workers")]
+    hosts: Option<String>,
+    /// With --hosts: this process's line in the host file, counted from 0.
+    #[arg(long, value_name = "I", requires = "hosts")]
+    process: Option<usize>,
     /// Explore even when there are more than a million input vectors per tick.
     #[arg(long)]
     force: bool,
@@ -192,6 +205,18 @@ pub fn run(a: VerifyArgs) -> Result<u8> {
     }
     let opts = options(&a, max_memory, remaining(timeout, started));
     let engine: statecheck_verify::Engine = a.engine.into();
+    if a.workers.is_some() {
+        if !matches!(
+            engine,
+            statecheck_verify::Engine::Auto | statecheck_verify::Engine::Explicit
+        ) {
+            bail!(
+                "--workers distributes the explicit engine; it cannot be combined with --engine {}",
+                engine.as_str()
+            );
+        }
+        return dist::run(&a, &loaded, &program, opts);
+    }
     let explicit = engine == statecheck_verify::Engine::Explicit;
     if explicit {
         report::announce_branching(&program, &opts, a.json || a.json_lines || a.quiet);

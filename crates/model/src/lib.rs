@@ -10,6 +10,7 @@
 mod cascade;
 mod chart;
 pub mod components;
+mod composite;
 mod duration;
 mod expr;
 pub mod formula;
@@ -55,6 +56,12 @@ pub fn check(file: &ast::File) -> (Model, Vec<Diagnostic>) {
     let (file, sys_origins) = match &configured {
         Some(c) => (&c.file, c.origins.as_slice()),
         None => (file, &[][..]),
+    };
+    // Component instances become their inner instances, systems flat (`composite/`).
+    let flattened = composite::flatten(file, &mut early);
+    let (file, sys_origins) = match &flattened {
+        Some(f) => (&f.file, sys_origins),
+        None => (file, sys_origins),
     };
     // Parameterised charts become one ordinary chart per argument list (`params.rs`).
     let expanded = {
@@ -145,6 +152,10 @@ pub fn check(file: &ast::File) -> (Model, Vec<Diagnostic>) {
             params::annotate(&mut ck.sink.diags, before, origin(id), &c.name.name);
         }
     }
+    if let Some(f) = &flattened {
+        composite::conformance(file, &f.components, &mut ck);
+        composite::check_ports(file, &f.links, &charts, &mut ck);
+    }
 
     let mut systems = Vec::new();
     let mut system_names: HashMap<String, Span> = HashMap::new();
@@ -174,6 +185,11 @@ pub fn check(file: &ast::File) -> (Model, Vec<Diagnostic>) {
                         .with_secondary(at, format!("in configuration `{config}`"));
                 }
             }
+        }
+    }
+    if let Some(f) = &flattened {
+        for s in &mut systems {
+            s.implicit |= f.standalone.contains(&s.name);
         }
     }
     // Every top-level chart can also run alone, as a system of one instance named like it.
@@ -233,7 +249,7 @@ pub fn check(file: &ast::File) -> (Model, Vec<Diagnostic>) {
         );
     }
     diags.sort_by_key(|d| (d.span.start, d.span.end));
-    if expanded.is_some() || configured.is_some() {
+    if expanded.is_some() || configured.is_some() || flattened.is_some() {
         params::dedup(&mut diags);
         components::suppress_slot_cascades(file, &mut diags);
     }
@@ -332,6 +348,9 @@ fn collect_globals(file: &ast::File, g: &mut Globals, diags: &mut Vec<Diagnostic
             }
             ast::Item::Interface(i) => {
                 declare(&i.name, diags);
+            }
+            ast::Item::Component(c) => {
+                declare(&c.name, diags);
             }
             ast::Item::System(_) | ast::Item::Import(_) => {}
             ast::Item::Tick(t) => {

@@ -43,6 +43,26 @@ pub enum Item {
     Import(ImportDecl),
     /// `interface Name { input x: T; output event e; … }` (`docs/components.md`).
     Interface(InterfaceDecl),
+    /// `component Name [implements I] { ports; instances; connections; … }`: a composite
+    /// component, flattened into its instances before checking (`docs/components.md`).
+    Component(Component),
+}
+
+/// `component Name [implements I, …] { port; … instance …; connect …; order …; … }`: a
+/// composite component with a declared interface (its ports) built from instances.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Component {
+    /// The component's name.
+    pub name: Ident,
+    /// The interfaces it declares it implements.
+    pub implements: Vec<Ident>,
+    /// Its ports: `input`/`output` variables and events (no initial values).
+    pub ports: Vec<VarDecl>,
+    /// Its contents, as a system body: instances, connections, `order`, assumptions, rates
+    /// and properties (`body.name` is the component's name).
+    pub body: System,
+    /// The whole declaration.
+    pub span: Span,
 }
 
 /// `interface Name { member; … }`: the ports a chart that implements it must declare.

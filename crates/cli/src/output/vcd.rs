@@ -73,9 +73,23 @@ impl<'a> Stream<'a> {
             "$date statecheck trace $end\n$version statecheck {} $end\n$timescale {scale} $end",
             env!("CARGO_PKG_VERSION")
         );
+        // An instance of a composite component (`storage.feeder.cyl`) sits in one scope per
+        // component instance on its path, shared by its siblings.
+        let mut parents: Vec<&str> = Vec::new();
         for (i, inst) in views.instances.iter().enumerate() {
             let inst = &inst.name;
-            let _ = writeln!(out, "$scope module {} $end", vcd_name(inst));
+            let path: Vec<&str> = inst.split('.').collect();
+            let (up, leaf) = path.split_at(path.len() - 1);
+            let common = parents.iter().zip(up).take_while(|(a, b)| a == b).count();
+            while parents.len() > common {
+                parents.pop();
+                let _ = writeln!(out, "$upscope $end");
+            }
+            for p in &up[common..] {
+                let _ = writeln!(out, "$scope module {} $end", vcd_name(p));
+                parents.push(p);
+            }
+            let _ = writeln!(out, "$scope module {} $end", vcd_name(leaf[0]));
             let prefix = format!("{inst}.");
             for v in views.vars.iter().filter(|v| v.name.starts_with(&prefix)) {
                 let id = ident(sigs.len());
@@ -131,6 +145,9 @@ impl<'a> Stream<'a> {
                 let _ = writeln!(out, "$upscope $end");
             }
             let _ = writeln!(out, "$upscope $end\n$upscope $end");
+        }
+        for _ in parents {
+            let _ = writeln!(out, "$upscope $end");
         }
         let _ = writeln!(out, "$enddefinitions $end");
         let last = vec![None; sigs.len()];
