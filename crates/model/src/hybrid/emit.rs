@@ -80,6 +80,33 @@ pub fn grid_comment(p: &Plan) -> String {
     s
 }
 
+/// What mode `i` of `p` became, for the comment that keeps its `der` in `show --discretized`:
+/// `mode 1: 2 ticks per cell of 5` for a constant speed on equal cells, else `mode 1`.
+pub fn mode_note(p: &Plan, i: usize) -> String {
+    let m = &p.modes[i];
+    let steps: Vec<(i64, i64)> = m
+        .table
+        .iter()
+        .enumerate()
+        .flat_map(|(from, t)| {
+            t.iter()
+                .map(move |(to, k)| ((p.points[*to] - p.points[from]).abs(), *k))
+        })
+        .collect();
+    match steps.first() {
+        Some(first) if m.constant().is_some() && steps.iter().all(|s| s == first) => {
+            let s = if first.1 == 1 { "" } else { "s" };
+            format!(
+                "mode {}: {} tick{s} per cell of {}",
+                i + 1,
+                first.1,
+                first.0
+            )
+        }
+        _ => format!("mode {}", i + 1),
+    }
+}
+
 /// A sensor's predicate over the grid variable.
 pub fn sensor_expr(p: &Plan, lo: i64, hi: i64) -> String {
     let mut parts = Vec::new();

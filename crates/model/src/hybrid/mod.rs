@@ -388,23 +388,47 @@ fn splice_chart(
     for p in plans {
         during.push_str(&emit::during(p));
     }
-    fn comment_out(source: &str, body: &ast::StateBody, edits: &mut Vec<(usize, usize, String)>) {
+    // Each `der` is kept as a comment that says which mode it became and its readings.
+    let notes: Vec<(Span, String)> = plans
+        .iter()
+        .flat_map(|p| {
+            p.modes
+                .iter()
+                .enumerate()
+                .map(move |(i, m)| (m.span, emit::mode_note(p, i)))
+        })
+        .collect();
+    fn comment_out(
+        source: &str,
+        body: &ast::StateBody,
+        notes: &[(Span, String)],
+        edits: &mut Vec<(usize, usize, String)>,
+    ) {
         for h in &body.hybrid {
             if let HybridElem::Continuous { .. } = h {
                 continue;
             }
             let s = h.span();
             let text = source.get(s.range()).unwrap_or("").replace("*/", "* /");
-            edits.push((s.start as usize, s.end as usize, format!("/* {text} */")));
+            let note = notes
+                .iter()
+                .find(|(at, _)| *at == s)
+                .map(|(_, n)| format!(" ({n})"))
+                .unwrap_or_default();
+            edits.push((
+                s.start as usize,
+                s.end as usize,
+                format!("/* {text}{note} */"),
+            ));
         }
         for st in &body.states {
-            comment_out(source, &st.body, edits);
+            comment_out(source, &st.body, notes, edits);
         }
         for r in &body.regions {
-            comment_out(source, &r.body, edits);
+            comment_out(source, &r.body, notes, edits);
         }
     }
-    comment_out(source, &c.body, edits);
+    comment_out(source, &c.body, &notes, edits);
     for p in plans {
         edits.push((
             p.span.start as usize,

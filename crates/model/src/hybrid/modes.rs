@@ -67,7 +67,7 @@ impl Cx<'_, '_> {
             if p.modes.len() > MAX_MODES {
                 self.error(
                     p.span,
-                    "E0172",
+                    "E0182",
                     format!(
                         "`{}` moves in {} states, more than the {MAX_MODES} allowed",
                         p.var,
