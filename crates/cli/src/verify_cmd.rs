@@ -8,6 +8,7 @@
 //! (a limit was hit), 2 usage errors.
 
 mod cex;
+mod dist;
 mod live;
 mod matrix;
 mod report;
@@ -72,6 +73,18 @@ pub struct VerifyArgs {
     /// Worker threads (default: one per core).
     #[arg(long, value_name = "N")]
     threads: Option<usize>,
+    /// Distribute the explicit search over N worker threads in this process (timely
+    /// dataflow, docs/distributed.md); with --hosts, N per process. Temporal properties are
+    /// then reported `unknown`.
+    #[arg(long, value_name = "N", conflicts_with_all = ["all_configs", "certificate", "check_certificate"])]
+    workers: Option<usize>,
+    /// With --workers: the host file, one `host:port` per process in process order (timely's
+    /// convention); every process runs the same command with its own --process.
+    #[arg(long, value_name = "FILE", requires = "workers")]
+    hosts: Option<String>,
+    /// With --hosts: this process's line in the host file, counted from 0.
+    #[arg(long, value_name = "I", requires = "hosts")]
+    process: Option<usize>,
     /// Explore even when there are more than a million input vectors per tick.
     #[arg(long)]
     force: bool,
@@ -134,6 +147,8 @@ impl From<BackendArg> for Backend {
 
 /// Run the command; returns the exit code.
 pub fn run(a: VerifyArgs) -> Result<u8> {
+    // `--timeout` counts from here: reading, checking and lowering the model are inside it.
+    let started = std::time::Instant::now();
     if let Some(plant) = &a.plant {
         let (sys, psys) = (a.system.as_deref(), a.plant_system.as_deref());
         return crate::supervisor::verify_supervisor(&a.model, sys, plant, psys, a.quiet);
@@ -164,7 +179,7 @@ pub fn run(a: VerifyArgs) -> Result<u8> {
     let sys = loaded.system_in(a.system.as_deref(), a.config.as_deref())?;
     if a.all_configs {
         let base = sys.name.clone();
-        let check = options(&a, max_memory, timeout);
+        let check = options(&a, max_memory, remaining(timeout, started));
         let cancel = statecheck_verify::Cancel::new();
         watch::on_interrupt(&cancel);
         let _memory = max_memory.map(|m| watch::memory(&cancel, m));
@@ -188,8 +203,20 @@ pub fn run(a: VerifyArgs) -> Result<u8> {
     if a.certificate.is_some() && a.engine != symbolic::EngineArg::Ic3 {
         bail!("--certificate needs --engine ic3");
     }
-    let opts = options(&a, max_memory, timeout);
+    let opts = options(&a, max_memory, remaining(timeout, started));
     let engine: statecheck_verify::Engine = a.engine.into();
+    if a.workers.is_some() {
+        if !matches!(
+            engine,
+            statecheck_verify::Engine::Auto | statecheck_verify::Engine::Explicit
+        ) {
+            bail!(
+                "--workers distributes the explicit engine; it cannot be combined with --engine {}",
+                engine.as_str()
+            );
+        }
+        return dist::run(&a, &loaded, &program, opts);
+    }
     let explicit = engine == statecheck_verify::Engine::Explicit;
     if explicit {
         report::announce_branching(&program, &opts, a.json || a.json_lines || a.quiet);
@@ -263,6 +290,12 @@ pub fn run(a: VerifyArgs) -> Result<u8> {
 }
 
 /// The engines' options from the flags.
+/// What is left of `timeout` since `started` (zero when it has passed: the engines then answer
+/// `unknown` at once).
+fn remaining(timeout: Option<Duration>, started: std::time::Instant) -> Option<Duration> {
+    timeout.map(|t| t.saturating_sub(started.elapsed()))
+}
+
 fn options(a: &VerifyArgs, max_memory: Option<u64>, timeout: Option<Duration>) -> Options {
     Options {
         properties: a.properties.clone(),

@@ -63,6 +63,26 @@ pub struct Spec {
     pub(crate) after_tick: bool,
 }
 
+impl Spec {
+    /// True when the machine, as a tick left it, decides this property (violates it, or for
+    /// `reachable` witnesses it): the IR's reading of the goal, exactly as this engine checks
+    /// it on a transition. Always false for a built-in property, which a run-time error of
+    /// the tick decides instead ([`Spec::builtin`]). A hook for other explorers of the same
+    /// transition system (the distributed engine).
+    pub fn decided_by(&self, m: &mut statecheck_ir::Machine) -> bool {
+        crate::expand::decides(m, self.check)
+    }
+
+    /// The built-in property this is, if it is one: decided by a tick's run-time error of
+    /// that kind (`RuntimeErrorKind::builtin`).
+    pub fn builtin(&self) -> Option<Builtin> {
+        match self.check {
+            Check::Builtin(b) => Some(b),
+            _ => None,
+        }
+    }
+}
+
 /// Mark the properties that read only the state and the inputs ([`Spec::after_tick`]), and
 /// those that can be checked once per newly found state instead of on every transition: those whose expressions read only persistent state slots (so their value
 /// after a tick is a function of the successor state), unless the initial state decides them

@@ -560,7 +560,10 @@ impl Builder {
             } => {
                 self.expr(trigger, cx);
                 self.expr(response, cx);
-                self.expr(within, cx);
+                match within {
+                    Delay::Ticks(e) => self.expr(e, cx),
+                    Delay::Time(d) => self.expr(&d.amount, cx),
+                }
             }
             PropertyKind::RespondEventually { trigger, response } => {
                 self.expr(trigger, cx);

@@ -11,8 +11,10 @@ mod cascade;
 mod chart;
 pub mod components;
 mod composite;
+mod duration;
 mod expr;
 pub mod formula;
+pub mod hybrid;
 pub mod imports;
 pub mod lint;
 pub mod model;
@@ -38,10 +40,17 @@ use std::collections::HashMap;
 /// Check a parsed file. Always returns a model (possibly incomplete) and all diagnostics,
 /// including design-rule warnings; the model is usable only if no diagnostic is an error.
 pub fn check(file: &ast::File) -> (Model, Vec<Diagnostic>) {
+    let original = file;
     let mut globals = Globals::default();
     let mut early = Vec::new();
     collect_globals(file, &mut globals, &mut early);
     check_consts_and_fns(file, &mut globals, &mut early);
+    // Continuous variables become grid variables, modes and timers (`hybrid/`).
+    let discretized = hybrid::discretize(file, &globals, &hybrid::before_expansion, &mut early);
+    let file = match &discretized {
+        Some(d) => &d.file,
+        None => file,
+    };
     // Systems with configurations become one system per configuration (`components.rs`).
     let configured = components::expand(file, &mut early);
     let (file, sys_origins) = match &configured {
@@ -85,6 +94,22 @@ pub fn check(file: &ast::File) -> (Model, Vec<Diagnostic>) {
             (&e.file, e.origins.as_slice())
         }
         None => (file, &[][..]),
+    };
+    // Copies of parameterised charts with continuous variables are discretized now, each
+    // with its arguments; a copy with placeholder values only declares the variables.
+    let copies = expanded.as_ref().and_then(|_| {
+        let treat = |_: &ast::Chart, id: usize| match origins.get(id) {
+            Some(params::Origin::Placeholder) => hybrid::Treat::DeclareOnly,
+            _ => hybrid::Treat::Discretize,
+        };
+        let mut ds = Vec::new();
+        let d = hybrid::discretize(file, &globals, &treat, &mut ds);
+        early.extend(ds);
+        d
+    });
+    let file = match &copies {
+        Some(d) => &d.file,
+        None => file,
     };
     let origin = |id: usize| origins.get(id).unwrap_or(&params::Origin::Plain);
     let globals_ref = &globals;
@@ -216,7 +241,12 @@ pub fn check(file: &ast::File) -> (Model, Vec<Diagnostic>) {
     let mut diags = ck.sink.diags;
     cascade::suppress(file, &mut diags);
     if !diags.iter().any(Diagnostic::is_error) {
-        diags.extend(lint::lint(&model));
+        let generated = hybrid::generated_spans(original);
+        diags.extend(
+            lint::lint(&model)
+                .into_iter()
+                .filter(|d| !generated.contains(&d.span)),
+        );
     }
     diags.sort_by_key(|d| (d.span.start, d.span.end));
     if expanded.is_some() || configured.is_some() || flattened.is_some() {
@@ -224,6 +254,16 @@ pub fn check(file: &ast::File) -> (Model, Vec<Diagnostic>) {
         components::suppress_slot_cascades(file, &mut diags);
     }
     (model, diags)
+}
+
+/// The file's constants, enums, functions and tick, with their diagnostics dropped (for
+/// passes that run outside [`check`]).
+pub(crate) fn globals_of(file: &ast::File) -> Globals {
+    let mut globals = Globals::default();
+    let mut sink = Vec::new();
+    collect_globals(file, &mut globals, &mut sink);
+    check_consts_and_fns(file, &mut globals, &mut sink);
+    globals
 }
 
 fn collect_globals(file: &ast::File, g: &mut Globals, diags: &mut Vec<Diagnostic>) {

@@ -10,7 +10,7 @@ fn root() -> PathBuf {
 /// Where each workspace crate sits in the pipeline: a crate may depend only on crates of a
 /// lower layer, so crates of one layer (the engines and generators above all) never depend on
 /// each other. A new crate must be placed here.
-const LAYERS: [(&str, u32); 18] = [
+const LAYERS: [(&str, u32); 19] = [
     ("statecheck-base", 0),
     ("statecheck-syntax", 1),
     ("statecheck-fmt", 2),
@@ -24,6 +24,8 @@ const LAYERS: [(&str, u32); 18] = [
     ("statecheck-codegen", 4),
     // The explicit engine's native successor generator (explicit + codegen).
     ("statecheck-native", 5),
+    // The explicit search distributed over timely dataflow workers (explicit's hooks).
+    ("statecheck-dist", 5),
     // The portfolio over the engines.
     ("statecheck-verify", 6),
     // The edges: they read files, serve, print.

@@ -29,9 +29,10 @@ fn vcd_name(s: &str) -> String {
         .collect()
 }
 
-/// Render a trace as VCD; one tick lasts `tick_ms` milliseconds (1 if the model declares none).
-pub fn render(p: &Program, views: &Views, trace: &[TickRecord], tick_ms: i64) -> String {
-    let (mut s, mut out) = Stream::new(p, views, tick_ms);
+/// Render a trace as VCD: with a declared tick, in a time scale that matches it
+/// ([`statecheck_ir::time::vcd_timescale`]); without one, one tick is one unit of `1ms`.
+pub fn render(p: &Program, views: &Views, trace: &[TickRecord]) -> String {
+    let (mut s, mut out) = Stream::new(p, views);
     for rec in trace {
         out.push_str(&s.tick(rec.tick, &rec.slots));
     }
@@ -51,17 +52,25 @@ pub struct Stream<'a> {
     sigs: Vec<(String, Sig)>,
     last: Vec<Option<i64>>,
     last_tick: Option<u64>,
-    tick_ms: i64,
+    /// Time units of the `$timescale` per tick.
+    units: i64,
 }
 
 impl<'a> Stream<'a> {
     /// The stream and the file's header (the signal definitions).
-    pub fn new(p: &'a Program, views: &Views, tick_ms: i64) -> (Self, String) {
+    pub fn new(p: &'a Program, views: &Views) -> (Self, String) {
         let mut sigs: Vec<(String, Sig)> = Vec::new();
         let mut out = String::new();
+        let (units, scale) = match p.tick_ms {
+            Some(ms) => {
+                let (unit_ms, text) = statecheck_ir::time::vcd_timescale(ms);
+                (ms / unit_ms, text)
+            }
+            None => (1, "1ms"),
+        };
         let _ = writeln!(
             out,
-            "$date statecheck trace $end\n$version statecheck {} $end\n$timescale 1ms $end",
+            "$date statecheck trace $end\n$version statecheck {} $end\n$timescale {scale} $end",
             env!("CARGO_PKG_VERSION")
         );
         // An instance of a composite component (`storage.feeder.cyl`) sits in one scope per
@@ -148,7 +157,7 @@ impl<'a> Stream<'a> {
                 sigs,
                 last,
                 last_tick: None,
-                tick_ms,
+                units,
             },
             out,
         )
@@ -177,13 +186,13 @@ impl<'a> Stream<'a> {
         if changes.is_empty() && tick != 0 {
             return changes;
         }
-        format!("#{}\n{changes}", tick as i64 * self.tick_ms)
+        format!("#{}\n{changes}", tick as i64 * self.units)
     }
 
     /// The end of the last tick (call once after it).
     pub fn finish(&mut self) -> String {
         self.last_tick
-            .map(|t| format!("#{}\n", (t as i64 + 1) * self.tick_ms))
+            .map(|t| format!("#{}\n", (t as i64 + 1) * self.units))
             .unwrap_or_default()
     }
 }

@@ -55,7 +55,10 @@ impl Paths<'_> {
             } => {
                 self.expr(trigger);
                 self.expr(response);
-                self.expr(within);
+                match within {
+                    ast::Delay::Ticks(e) => self.expr(e),
+                    ast::Delay::Time(d) => self.expr(&mut d.amount),
+                }
             }
             ast::PropertyKind::RespondEventually { trigger, response } => {
                 self.expr(trigger);

@@ -398,7 +398,7 @@ impl Printer<'_> {
                 "respond {n}: {} => {} within {};",
                 self.expr(trigger),
                 self.expr(response),
-                self.expr(within)
+                self.delay(within)
             ),
             PropertyKind::RespondEventually { trigger, response } => format!(
                 "respond {n}: {} => {};",

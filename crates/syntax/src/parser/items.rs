@@ -348,6 +348,9 @@ impl Parser<'_> {
             let start = self.pos;
             let t = self.peek();
             let r = match t {
+                Tok::Ident if self.at_hybrid_elem() => {
+                    self.hybrid_elem().map(|h| chart.body.hybrid.push(h))
+                }
                 Tok::Ident if self.at_temporal_decl() => {
                     self.temporal_property().map(|p| chart.properties.push(p))
                 }
@@ -562,7 +565,7 @@ impl Parser<'_> {
                     self.report(d);
                     return Err(Failed);
                 }
-                let within = self.expr();
+                let within = self.delay();
                 PropertyKind::Respond {
                     trigger,
                     response,

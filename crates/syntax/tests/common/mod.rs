@@ -284,7 +284,10 @@ impl Printer {
                 "respond {n}: {} => {} within {}",
                 expr(trigger),
                 expr(response),
-                expr(within)
+                match within {
+                    Delay::Ticks(e) => expr(e),
+                    Delay::Time(d) => duration(d),
+                }
             )),
             PropertyKind::RespondEventually { trigger, response } => self.line(format!(
                 "respond {n}: {} => {}",
