@@ -153,7 +153,7 @@ fn plan_file(
                         let span = o.body.hybrid.first().map_or(o.span, HybridElem::span);
                         cx.error(
                             span,
-                            "E0172",
+                            "E0182",
                             "an observer cannot declare continuous variables",
                             "declare them in a plant chart",
                         );
@@ -176,7 +176,7 @@ impl Cx<'_, '_> {
             if let Some(v) = c.vars.iter().find(|v| &v.name.name == name) {
                 self.error(
                     v.name.span,
-                    "E0172",
+                    "E0182",
                     format!(
                         "`{name}` is declared, but the discretization of `{}` needs the name",
                         p.var

@@ -1,6 +1,6 @@
 //! The motion modes of a chart (each state with `der(x) = …`) and their clock readings: the
 //! ticks after which the motion reaches each grid point, exact in rational arithmetic, with
-//! `E0171` when a reading is not a whole number of ticks.
+//! `E0181` when a reading is not a whole number of ticks.
 
 use super::plan::{crossing, Mode, Plan};
 use super::rational::Ratio;
@@ -20,7 +20,7 @@ impl Cx<'_, '_> {
             let Some(p) = plans.iter_mut().find(|p| p.var == var) else {
                 self.error(
                     span,
-                    "E0172",
+                    "E0182",
                     format!("`{var}` is not a continuous variable of this chart"),
                     "declare it at chart level with `continuous NAME: [lo .. hi];`",
                 );
@@ -29,7 +29,7 @@ impl Cx<'_, '_> {
             if p.modes.iter().any(|m| m.path == path) {
                 self.error(
                     span,
-                    "E0172",
+                    "E0182",
                     format!("a state gives `der({var})` twice"),
                     "keep one",
                 );
@@ -46,7 +46,7 @@ impl Cx<'_, '_> {
             if signs.windows(2).any(|w| w[0] != w[1]) {
                 self.error(
                     span,
-                    "E0172",
+                    "E0182",
                     "a speed profile changes direction",
                     "split the motion into states, one per direction",
                 );
@@ -82,7 +82,7 @@ impl Cx<'_, '_> {
                     if secs.signum() <= 0 {
                         self.error(
                             d.span,
-                            "E0172",
+                            "E0182",
                             "a profile segment must last a positive time",
                             "write e.g. `1 for 2 s`",
                         );
@@ -139,7 +139,7 @@ impl Cx<'_, '_> {
         }
     }
 
-    /// Clock readings of every mode of `p`, in ticks; `E0171` where one is not whole.
+    /// Clock readings of every mode of `p`, in ticks; `E0181` where one is not whole.
     fn tables(&mut self, p: &mut Plan) {
         let Some(tick) = self.tick else {
             if !p.modes.is_empty() {
@@ -208,7 +208,7 @@ impl Cx<'_, '_> {
         let hint = tick_hint(&times, tick);
         for (_, span, msg) in bad {
             self.file_diags.push(
-                Diagnostic::error("E0171", msg, span)
+                Diagnostic::error("E0181", msg, span)
                     .with_label("clock reading not a whole tick")
                     .with_hint(hint.clone()),
             );
@@ -314,7 +314,7 @@ fn walk(
                 if path.is_empty() {
                     cx.error(
                         *span,
-                        "E0172",
+                        "E0182",
                         "`der` belongs in a state",
                         "move it into a state",
                     );
@@ -324,7 +324,7 @@ fn walk(
             }
             other => cx.error(
                 other.span(),
-                "E0172",
+                "E0182",
                 "`continuous`, `grid` and `sensor` are declared at chart level",
                 "move this to the top of the chart",
             ),
