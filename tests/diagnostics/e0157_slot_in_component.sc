@@ -1,7 +1,7 @@
 // Configurations binding slots inside component instances by path: a chart that does not
 // implement the slot's interface (E0156, so the slot stays open: E0157), a path that names no
 // instance (E0101), a chart instance that is not a slot (E0156), a component for a slot inside
-// a component (E0183).
+// a component (E0173).
 interface Presence {
   input pos: int[0..3];
   output hit: bool;

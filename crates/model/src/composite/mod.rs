@@ -21,9 +21,9 @@ use statecheck_base::{Diagnostic, Span};
 use statecheck_syntax::ast;
 use std::collections::{HashMap, HashSet};
 
-/// Components nested deeper than this are reported (E0180), which also bounds recursion.
+/// Components nested deeper than this are reported (E0170), which also bounds recursion.
 const MAX_DEPTH: usize = 32;
-/// A system flattened to more instances than this is reported (E0183): a few components
+/// A system flattened to more instances than this is reported (E0173): a few components
 /// nested a few levels deep multiply.
 const MAX_INSTANCES: usize = 4096;
 
@@ -139,11 +139,11 @@ pub(crate) fn flatten(file: &ast::File, diags: &mut Vec<Diagnostic>) -> Option<F
     })
 }
 
-/// What a component may not contain, and its ports' own rules (E0183, E0102).
+/// What a component may not contain, and its ports' own rules (E0173, E0102).
 fn component_rules(c: &ast::Component, diags: &mut Vec<Diagnostic>) {
     let unsupported = |span: Span, what: &str| {
         Diagnostic::error(
-            "E0183",
+            "E0173",
             format!("{what} inside component `{}` is not supported", c.name.name),
             span,
         )
@@ -178,7 +178,7 @@ fn component_rules(c: &ast::Component, diags: &mut Vec<Diagnostic>) {
         if let Some(init) = &p.init {
             diags.push(
                 Diagnostic::error(
-                    "E0183",
+                    "E0173",
                     format!("port `{}` has an initial value", p.name.name),
                     init.span(),
                 )
@@ -189,7 +189,7 @@ fn component_rules(c: &ast::Component, diags: &mut Vec<Diagnostic>) {
         if p.kind == ast::VarKind::Local {
             diags.push(
                 Diagnostic::error(
-                    "E0183",
+                    "E0173",
                     format!(
                         "`{}`: a component declares only input and output ports",
                         p.name.name

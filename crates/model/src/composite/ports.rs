@@ -1,5 +1,5 @@
 //! Checks on the checked charts: each component port against the inner variable it is wired
-//! to (E0182), and each component against the interfaces it implements (E0152–E0154).
+//! to (E0172), and each component against the interfaces it implements (E0152–E0154).
 
 use super::PortLink;
 use crate::components::fits;
@@ -18,7 +18,7 @@ fn what(is_event: bool, kind: VarKind) -> String {
     format!("{k} {}", if is_event { "event" } else { "variable" })
 }
 
-/// E0182 for every wiring of a port to an inner variable of another kind or an incompatible
+/// E0172 for every wiring of a port to an inner variable of another kind or an incompatible
 /// type (an input port's values must all be accepted by the inner input; an inner output's
 /// values must all lie in the output port's type). Reported once per component and port.
 pub(crate) fn check(
@@ -64,7 +64,7 @@ pub(crate) fn check(
         if !kind_ok {
             ck.sink.push(
                 Diagnostic::error(
-                    "E0182",
+                    "E0172",
                     format!(
                         "port `{}` of component `{}` is an {} but is wired to `{}.{}`, an {}",
                         p.name.name,
@@ -90,7 +90,7 @@ pub(crate) fn check(
             let (wn, vn) = (type_name(ck.globals, want), type_name(ck.globals, v.ty));
             ck.sink.push(
                 Diagnostic::error(
-                    "E0182",
+                    "E0172",
                     format!(
                         "port `{}` of component `{}` is `{wn}` but is wired to `{}.{}`, a `{vn}`",
                         p.name.name,

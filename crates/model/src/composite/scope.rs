@@ -214,7 +214,7 @@ impl<'a, 'd> Flattener<'a, 'd> {
                 if self.leaves == MAX_INSTANCES + 1 {
                     self.diags.push(
                         Diagnostic::error(
-                            "E0183",
+                            "E0173",
                             format!(
                                 "system `{}` flattens to more than {MAX_INSTANCES} instances",
                                 self.system
@@ -300,7 +300,7 @@ impl<'a, 'd> Flattener<'a, 'd> {
         if let Some(count) = &inst.count {
             self.diags.push(
                 Diagnostic::error(
-                    "E0183",
+                    "E0173",
                     format!("an array of component `{}` is not supported", c.name.name),
                     count.span(),
                 )
@@ -312,7 +312,7 @@ impl<'a, 'd> Flattener<'a, 'd> {
         if let Some(a) = inst.args.first() {
             self.diags.push(
                 Diagnostic::error(
-                    "E0183",
+                    "E0173",
                     format!("component `{}` takes no arguments", c.name.name),
                     a.span,
                 )
@@ -326,7 +326,7 @@ impl<'a, 'd> Flattener<'a, 'd> {
             cycle.push(&c.name.name);
             self.diags.push(
                 Diagnostic::error(
-                    "E0180",
+                    "E0170",
                     format!(
                         "component `{}` contains itself: {}",
                         c.name.name,
@@ -347,7 +347,7 @@ impl<'a, 'd> Flattener<'a, 'd> {
                 self.leaves = MAX_INSTANCES + 1;
                 self.diags.push(
                     Diagnostic::error(
-                        "E0183",
+                        "E0173",
                         format!(
                             "system `{}` flattens to more than {MAX_INSTANCES} instances",
                             self.system
@@ -362,7 +362,7 @@ impl<'a, 'd> Flattener<'a, 'd> {
         if self.chain.len() >= MAX_DEPTH {
             self.diags.push(
                 Diagnostic::error(
-                    "E0180",
+                    "E0170",
                     format!("components nested deeper than {MAX_DEPTH} levels"),
                     inst.chart.span,
                 )
@@ -376,7 +376,7 @@ impl<'a, 'd> Flattener<'a, 'd> {
         Some(ch)
     }
 
-    /// E0181: an input port that feeds no inner instance, an output port no inner instance
+    /// E0171: an input port that feeds no inner instance, an output port no inner instance
     /// drives.
     fn unconnected_ports(&mut self, id: usize, c: &ast::Component) {
         for p in &c.ports {
@@ -406,7 +406,7 @@ impl<'a, 'd> Flattener<'a, 'd> {
                 };
                 self.diags.push(
                     Diagnostic::error(
-                        "E0181",
+                        "E0171",
                         format!(
                             "port `{}` of component `{}` {what}",
                             p.name.name, c.name.name
@@ -521,7 +521,7 @@ impl<'a, 'd> Flattener<'a, 'd> {
             Res::OutPort(o) => {
                 self.diags.push(
                     Diagnostic::error(
-                        "E0182",
+                        "E0172",
                         format!("output port `{o}` of component `{comp_name}` is read inside it"),
                         c.from.span,
                     )
@@ -540,7 +540,7 @@ impl<'a, 'd> Flattener<'a, 'd> {
             Res::InPort(a) => {
                 self.diags.push(
                     Diagnostic::error(
-                        "E0182",
+                        "E0172",
                         format!("input port `{a}` of component `{comp_name}` is written inside it"),
                         c.to.span,
                     )
@@ -557,7 +557,7 @@ impl<'a, 'd> Flattener<'a, 'd> {
                     Src::Port(a) => {
                         self.diags.push(
                             Diagnostic::error(
-                                "E0182",
+                                "E0172",
                                 format!("input port `{a}` connected straight to output port `{o}`"),
                                 c.span,
                             )
@@ -570,7 +570,7 @@ impl<'a, 'd> Flattener<'a, 'd> {
                 if self.scopes[id].outputs.contains_key(&o) {
                     self.diags.push(
                         Diagnostic::error(
-                            "E0182",
+                            "E0172",
                             format!("output port `{o}` of component `{comp_name}` is driven twice"),
                             c.span,
                         )
@@ -659,7 +659,7 @@ impl<'a, 'd> Flattener<'a, 'd> {
                 if segs.len() > 1 || first.index.is_some() {
                     self.diags.push(
                         Diagnostic::error(
-                            "E0182",
+                            "E0172",
                             format!("port `{}` has no members", p.name.name),
                             path.span,
                         )
@@ -690,7 +690,7 @@ impl<'a, 'd> Flattener<'a, 'd> {
         let segs = &path.segments;
         let c = self.scopes[ch].comp?;
         let bad = |msg: String, label: &str| {
-            Diagnostic::error("E0182", msg, path.span).with_label(label.to_string())
+            Diagnostic::error("E0172", msg, path.span).with_label(label.to_string())
         };
         if segs[0].index.is_some() {
             let d = bad(
@@ -753,7 +753,7 @@ impl<'a, 'd> Flattener<'a, 'd> {
                     .map(|p| p.name.name.as_str())
                     .chain(c.body.instances.iter().map(|i| i.name.name.as_str()));
                 let mut d = Diagnostic::error(
-                    "E0182",
+                    "E0172",
                     format!(
                         "component `{}` has no port or instance `{}`",
                         c.name.name, next.name.name

@@ -71,7 +71,7 @@ pub(super) fn bind_paths(s: &mut ast::System, file: &ast::File, diags: &mut Vec<
             if comps.contains_key(b.chart.name.as_str()) {
                 diags.push(
                     Diagnostic::error(
-                        "E0183",
+                        "E0173",
                         format!(
                             "slot `{}` inside a component takes a chart, not component `{}`",
                             b.instance.name, b.chart.name

@@ -1,4 +1,4 @@
-// Ports that lead nowhere inside their component (E0181): an input port that feeds no inner
+// Ports that lead nowhere inside their component (E0171): an input port that feeds no inner
 // instance and an output port that no inner instance drives.
 chart Lamp {
   input power: bool = false;

@@ -1,4 +1,4 @@
-// What a component cannot be or contain (E0183): an array of it, arguments, an observer
+// What a component cannot be or contain (E0173): an array of it, arguments, an observer
 // inside, a port with an initial value.
 chart Leaf {
   input event go;

@@ -1,4 +1,4 @@
-// A component that contains itself through another (E0180): the flattening would not end.
+// A component that contains itself through another (E0170): the flattening would not end.
 chart Leaf {
   input event go;
   initial S;

@@ -1,4 +1,4 @@
-// Wrong uses of a component's ports (E0182): a port the component lacks, an input port
+// Wrong uses of a component's ports (E0172): a port the component lacks, an input port
 // written inside, an output port read inside, a port wired to an inner variable of another
 // kind (an event to a variable) or an incompatible range, an output port driven twice.
 chart Counter {
