@@ -10,8 +10,13 @@ set -eu
 ROOT=$(cd "$(dirname "$0")/.." && pwd)
 OUT=${1:-$ROOT/docs/case-studies/wds.md}
 export CARGO_TARGET_DIR=${CARGO_TARGET_DIR:-$ROOT/target}
-cargo build --release -q -p statecheck-cli --manifest-path "$ROOT/Cargo.toml"
-SC=$CARGO_TARGET_DIR/release/statecheck
+# STATECHECK=PATH runs that binary instead of building the release one.
+if [ -n "${STATECHECK:-}" ]; then
+  SC=$STATECHECK
+else
+  cargo build --release -q -p statecheck-cli --manifest-path "$ROOT/Cargo.toml"
+  SC=$CARGO_TARGET_DIR/release/statecheck
+fi
 TMP=$(mktemp -d "${TMPDIR:-/tmp}/statecheck-wds.XXXXXX")
 trap 'rm -rf "$TMP"' EXIT
 cd "$ROOT"

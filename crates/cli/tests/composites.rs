@@ -103,6 +103,16 @@ fn the_sat_engines_agree_on_the_composite() {
         row.map(|r| (r.1.as_str(), r.2)),
         Some(("violated", Some(15)))
     );
+    // IC3 and k-induction decide every property as the explicit engine does.
+    let verdicts = |s: &Summary| {
+        let mut v: Vec<(String, String)> = s.2.iter().map(|r| (r.0.clone(), r.1.clone())).collect();
+        v.sort();
+        v
+    };
+    let explicit = verdicts(&summary(CELL, "explicit"));
+    for engine in ["ic3", "kind"] {
+        assert_eq!(verdicts(&summary(CELL, engine)), explicit, "{engine}");
+    }
 }
 
 #[test]

@@ -83,7 +83,10 @@ fn discretized_text_checks_and_verifies_alike() {
     assert_eq!(code, 0, "{err}");
     // No hybrid element is left but as a comment; the grid and the motion are plain code.
     assert!(text.contains("output pos: int[0..100] = 0;"), "{text}");
-    assert!(text.contains("/* der(pos) = 2; */"), "{text}");
+    assert!(
+        text.contains("/* der(pos) = 2; (mode 1: 2 ticks per cell of 5) */"),
+        "{text}"
+    );
     assert!(text.contains("if in(Push)"), "{text}");
     let dir = std::env::temp_dir().join(format!("statecheck-hybrid-{}", std::process::id()));
     std::fs::create_dir_all(&dir).expect("temp dir");

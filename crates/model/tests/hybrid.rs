@@ -154,7 +154,7 @@ plant chart P {
 }";
     let e = errors(src);
     assert_eq!(e.len(), 1, "{e:?}");
-    assert_eq!(e[0].0, "E0171");
+    assert_eq!(e[0].0, "E0181");
     assert!(
         e[0].1.contains("from 0 to 5") && e[0].1.contains("6.25 s"),
         "{}",
@@ -208,7 +208,7 @@ plant chart P {
     let codes: Vec<&str> = e.iter().map(|x| x.0.as_str()).collect();
     // The int sensor output, `der` at chart level, the grid of an unknown variable, the
     // `der` of an unknown variable.
-    assert_eq!(codes, vec!["E0172"; 4], "{e:?}");
+    assert_eq!(codes, vec!["E0182"; 4], "{e:?}");
 }
 
 #[test]

@@ -25,7 +25,7 @@ use std::collections::{HashMap, HashSet};
 const MAX_DEPTH: usize = 32;
 /// A system flattened to more instances than this is reported (E0173): a few components
 /// nested a few levels deep multiply.
-const MAX_INSTANCES: usize = 100_000;
+const MAX_INSTANCES: usize = 4096;
 
 /// The file with its systems flattened.
 pub(crate) struct Flattened {

@@ -340,6 +340,25 @@ impl<'a, 'd> Flattener<'a, 'd> {
             );
             return None;
         }
+        // Components nested a few levels deep multiply: bound the instances visited, not
+        // only the leaves kept, so that the flattening's time and memory stay bounded.
+        if self.scopes.len() + self.leaves >= MAX_INSTANCES {
+            if self.leaves <= MAX_INSTANCES {
+                self.leaves = MAX_INSTANCES + 1;
+                self.diags.push(
+                    Diagnostic::error(
+                        "E0173",
+                        format!(
+                            "system `{}` flattens to more than {MAX_INSTANCES} instances",
+                            self.system
+                        ),
+                        inst.span,
+                    )
+                    .with_label("this instance is one too many"),
+                );
+            }
+            return None;
+        }
         if self.chain.len() >= MAX_DEPTH {
             self.diags.push(
                 Diagnostic::error(

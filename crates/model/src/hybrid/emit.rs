@@ -80,6 +80,33 @@ pub fn grid_comment(p: &Plan) -> String {
     s
 }
 
+/// What mode `i` of `p` became, for the comment that keeps its `der` in `show --discretized`:
+/// `mode 1: 2 ticks per cell of 5` for a constant speed on equal cells, else `mode 1`.
+pub fn mode_note(p: &Plan, i: usize) -> String {
+    let m = &p.modes[i];
+    let steps: Vec<(i64, i64)> = m
+        .table
+        .iter()
+        .enumerate()
+        .flat_map(|(from, t)| {
+            t.iter()
+                .map(move |(to, k)| ((p.points[*to] - p.points[from]).abs(), *k))
+        })
+        .collect();
+    match steps.first() {
+        Some(first) if m.constant().is_some() && steps.iter().all(|s| s == first) => {
+            let s = if first.1 == 1 { "" } else { "s" };
+            format!(
+                "mode {}: {} tick{s} per cell of {}",
+                i + 1,
+                first.1,
+                first.0
+            )
+        }
+        _ => format!("mode {}", i + 1),
+    }
+}
+
 /// A sensor's predicate over the grid variable.
 pub fn sensor_expr(p: &Plan, lo: i64, hi: i64) -> String {
     let mut parts = Vec::new();
@@ -130,21 +157,15 @@ pub fn during(p: &Plan) -> String {
             );
         }
         let _ = writeln!(s, " else {{ {} = 0; {} = 0; }}", n.mode, n.ticks);
-        let mut first = true;
         for (i, m) in p.modes.iter().enumerate() {
             let body = motion(p, i, &n);
             if body.is_empty() {
                 continue;
             }
-            let _ = writeln!(
-                s,
-                "{}if {} == {} {{\n{body}}}",
-                if first { "" } else { "else " },
-                n.mode,
-                i + 1
-            );
+            // Sequential `if`s, not an `else if` chain: the motion never changes the mode, and
+            // a long chain would nest past the parser's depth limit.
+            let _ = writeln!(s, "if {} == {} {{\n{body}}}", n.mode, i + 1);
             let _ = m;
-            first = false;
         }
     }
     // A sensor is sampled exactly at every tick for constant speeds: after a motion left a
@@ -253,15 +274,13 @@ fn motion(p: &Plan, i: usize, n: &Names) -> String {
                 n.ticks, n.ticks
             );
         } else {
-            for (c, (from, to, k)) in steps.iter().enumerate() {
+            // One `if` per cell, in sequence: after a step the timer is 0 and no other cell's
+            // condition (timer >= k >= 1) holds in the same tick.
+            for (from, to, k) in &steps {
                 let _ = writeln!(
                     s,
-                    "{}if {x} == {} && {} >= {k} {{ {x} = {}; {} = 0; }}",
-                    if c == 0 { "" } else { "else " },
-                    p.points[*from],
-                    n.ticks,
-                    p.points[*to],
-                    n.ticks
+                    "if {x} == {} && {} >= {k} {{ {x} = {}; {} = 0; }}",
+                    p.points[*from], n.ticks, p.points[*to], n.ticks
                 );
             }
         }
@@ -269,29 +288,17 @@ fn motion(p: &Plan, i: usize, n: &Names) -> String {
     } else {
         let h = m.table.iter().flatten().map(|(_, k)| *k).max().unwrap_or(1);
         let _ = writeln!(s, "if {} < {h} {{ {} += 1; }}", n.ticks, n.ticks);
-        let mut first = true;
+        // Sequential `if`s: the start point does not change, and the readings of one start
+        // point are distinct ticks, so at most one holds.
         for (from, t) in m.table.iter().enumerate() {
             if t.is_empty() {
                 continue;
             }
-            let _ = write!(
-                s,
-                "{}if {} == {} {{ ",
-                if first { "" } else { "else " },
-                n.from,
-                p.points[from]
-            );
-            for (c, (to, k)) in t.iter().enumerate() {
-                let _ = write!(
-                    s,
-                    "{}if {} == {k} {{ {x} = {}; }}",
-                    if c == 0 { "" } else { " else " },
-                    n.ticks,
-                    p.points[*to]
-                );
+            let _ = write!(s, "if {} == {} {{", n.from, p.points[from]);
+            for (to, k) in t {
+                let _ = write!(s, " if {} == {k} {{ {x} = {}; }}", n.ticks, p.points[*to]);
             }
             s.push_str(" }\n");
-            first = false;
         }
     }
     s

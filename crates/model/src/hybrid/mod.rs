@@ -153,7 +153,7 @@ fn plan_file(
                         let span = o.body.hybrid.first().map_or(o.span, HybridElem::span);
                         cx.error(
                             span,
-                            "E0172",
+                            "E0182",
                             "an observer cannot declare continuous variables",
                             "declare them in a plant chart",
                         );
@@ -176,7 +176,7 @@ impl Cx<'_, '_> {
             if let Some(v) = c.vars.iter().find(|v| &v.name.name == name) {
                 self.error(
                     v.name.span,
-                    "E0172",
+                    "E0182",
                     format!(
                         "`{name}` is declared, but the discretization of `{}` needs the name",
                         p.var
@@ -275,7 +275,12 @@ fn strip(body: &mut ast::StateBody) {
 /// spans are all `at`.
 fn parse_generated(decls: &str, during: &str, at: Span) -> (Vec<ast::VarDecl>, Vec<ast::Stmt>) {
     let text = format!("chart G {{\n{decls}during {{\n{during}}}\n}}\n");
-    let (f, _) = statecheck_syntax::parse(&text);
+    let (f, diags) = statecheck_syntax::parse(&text);
+    // The generated text is built to parse (no deep nesting: see `emit.rs`); if it ever did
+    // not, nothing is generated rather than something partial.
+    if diags.iter().any(Diagnostic::is_error) {
+        return (Vec::new(), Vec::new());
+    }
     let Some(ast::Item::Chart(mut c)) = f.items.into_iter().next() else {
         return (Vec::new(), Vec::new());
     };
@@ -383,23 +388,47 @@ fn splice_chart(
     for p in plans {
         during.push_str(&emit::during(p));
     }
-    fn comment_out(source: &str, body: &ast::StateBody, edits: &mut Vec<(usize, usize, String)>) {
+    // Each `der` is kept as a comment that says which mode it became and its readings.
+    let notes: Vec<(Span, String)> = plans
+        .iter()
+        .flat_map(|p| {
+            p.modes
+                .iter()
+                .enumerate()
+                .map(move |(i, m)| (m.span, emit::mode_note(p, i)))
+        })
+        .collect();
+    fn comment_out(
+        source: &str,
+        body: &ast::StateBody,
+        notes: &[(Span, String)],
+        edits: &mut Vec<(usize, usize, String)>,
+    ) {
         for h in &body.hybrid {
             if let HybridElem::Continuous { .. } = h {
                 continue;
             }
             let s = h.span();
             let text = source.get(s.range()).unwrap_or("").replace("*/", "* /");
-            edits.push((s.start as usize, s.end as usize, format!("/* {text} */")));
+            let note = notes
+                .iter()
+                .find(|(at, _)| *at == s)
+                .map(|(_, n)| format!(" ({n})"))
+                .unwrap_or_default();
+            edits.push((
+                s.start as usize,
+                s.end as usize,
+                format!("/* {text}{note} */"),
+            ));
         }
         for st in &body.states {
-            comment_out(source, &st.body, edits);
+            comment_out(source, &st.body, notes, edits);
         }
         for r in &body.regions {
-            comment_out(source, &r.body, edits);
+            comment_out(source, &r.body, notes, edits);
         }
     }
-    comment_out(source, &c.body, edits);
+    comment_out(source, &c.body, &notes, edits);
     for p in plans {
         edits.push((
             p.span.start as usize,

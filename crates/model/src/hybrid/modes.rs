@@ -1,12 +1,16 @@
 //! The motion modes of a chart (each state with `der(x) = …`) and their clock readings: the
 //! ticks after which the motion reaches each grid point, exact in rational arithmetic, with
-//! `E0171` when a reading is not a whole number of ticks.
+//! `E0181` when a reading is not a whole number of ticks.
 
 use super::plan::{crossing, Mode, Plan};
 use super::rational::Ratio;
 use super::Cx;
 use statecheck_base::{Diagnostic, Span};
 use statecheck_syntax::ast::{self, HybridElem, SpeedExpr, SpeedNumber};
+
+/// The most states a variable may move in (the generated mode selection is one `if … else
+/// if …` chain, which must stay well within the parser's nesting limit).
+const MAX_MODES: usize = 100;
 
 /// The most grid points a variable with a speed profile may have (its table is quadratic).
 const MAX_PROFILE_POINTS: usize = 200;
@@ -20,7 +24,7 @@ impl Cx<'_, '_> {
             let Some(p) = plans.iter_mut().find(|p| p.var == var) else {
                 self.error(
                     span,
-                    "E0172",
+                    "E0182",
                     format!("`{var}` is not a continuous variable of this chart"),
                     "declare it at chart level with `continuous NAME: [lo .. hi];`",
                 );
@@ -29,7 +33,7 @@ impl Cx<'_, '_> {
             if p.modes.iter().any(|m| m.path == path) {
                 self.error(
                     span,
-                    "E0172",
+                    "E0182",
                     format!("a state gives `der({var})` twice"),
                     "keep one",
                 );
@@ -46,7 +50,7 @@ impl Cx<'_, '_> {
             if signs.windows(2).any(|w| w[0] != w[1]) {
                 self.error(
                     span,
-                    "E0172",
+                    "E0182",
                     "a speed profile changes direction",
                     "split the motion into states, one per direction",
                 );
@@ -60,6 +64,20 @@ impl Cx<'_, '_> {
             });
         }
         for p in plans.iter_mut() {
+            if p.modes.len() > MAX_MODES {
+                self.error(
+                    p.span,
+                    "E0182",
+                    format!(
+                        "`{}` moves in {} states, more than the {MAX_MODES} allowed",
+                        p.var,
+                        p.modes.len()
+                    ),
+                    "merge states that move alike",
+                );
+                p.modes.clear();
+                continue;
+            }
             self.tables(p);
         }
     }
@@ -82,7 +100,7 @@ impl Cx<'_, '_> {
                     if secs.signum() <= 0 {
                         self.error(
                             d.span,
-                            "E0172",
+                            "E0182",
                             "a profile segment must last a positive time",
                             "write e.g. `1 for 2 s`",
                         );
@@ -139,7 +157,7 @@ impl Cx<'_, '_> {
         }
     }
 
-    /// Clock readings of every mode of `p`, in ticks; `E0171` where one is not whole.
+    /// Clock readings of every mode of `p`, in ticks; `E0181` where one is not whole.
     fn tables(&mut self, p: &mut Plan) {
         let Some(tick) = self.tick else {
             if !p.modes.is_empty() {
@@ -208,7 +226,7 @@ impl Cx<'_, '_> {
         let hint = tick_hint(&times, tick);
         for (_, span, msg) in bad {
             self.file_diags.push(
-                Diagnostic::error("E0171", msg, span)
+                Diagnostic::error("E0181", msg, span)
                     .with_label("clock reading not a whole tick")
                     .with_hint(hint.clone()),
             );
@@ -314,7 +332,7 @@ fn walk(
                 if path.is_empty() {
                     cx.error(
                         *span,
-                        "E0172",
+                        "E0182",
                         "`der` belongs in a state",
                         "move it into a state",
                     );
@@ -324,7 +342,7 @@ fn walk(
             }
             other => cx.error(
                 other.span(),
-                "E0172",
+                "E0182",
                 "`continuous`, `grid` and `sensor` are declared at chart level",
                 "move this to the top of the chart",
             ),

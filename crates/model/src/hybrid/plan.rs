@@ -118,7 +118,7 @@ impl Cx<'_, '_> {
                     if plans.iter().any(|p: &Plan| p.var == name.name) {
                         self.error(
                             *span,
-                            "E0172",
+                            "E0182",
                             format!("`{}` is declared twice", name.name),
                             "declare each continuous variable once",
                         );
@@ -130,7 +130,7 @@ impl Cx<'_, '_> {
                     if l >= h {
                         self.error(
                             *span,
-                            "E0170",
+                            "E0180",
                             format!(
                                 "the range of `{}` is empty or a single point ({l} .. {h})",
                                 name.name
@@ -149,7 +149,7 @@ impl Cx<'_, '_> {
                     if i < l || i > h {
                         self.error(
                             *span,
-                            "E0170",
+                            "E0180",
                             format!(
                                 "the initial value {i} of `{}` is outside its range {l} .. {h}",
                                 name.name
@@ -176,7 +176,7 @@ impl Cx<'_, '_> {
                     if grids.iter().any(|g| g.0 == var.name) {
                         self.error(
                             *span,
-                            "E0172",
+                            "E0182",
                             format!("`{}` has two `grid` declarations", var.name),
                             "keep one",
                         );
@@ -188,7 +188,7 @@ impl Cx<'_, '_> {
                             Some(n) => {
                                 self.error(
                                     *span,
-                                    "E0170",
+                                    "E0180",
                                     format!("a grid needs at least one cell, not {n}"),
                                     "write `grid x N;` with N >= 1, or `grid x coarse;`",
                                 );
@@ -214,7 +214,7 @@ impl Cx<'_, '_> {
                 HybridElem::Der { span, .. } => {
                     self.error(
                         *span,
-                        "E0172",
+                        "E0182",
                         "`der` belongs in a state, not at chart level",
                         "move it into the state in which the variable moves",
                     );
@@ -225,7 +225,7 @@ impl Cx<'_, '_> {
             if !plans.iter().any(|p| &p.var == g) {
                 self.error(
                     *span,
-                    "E0172",
+                    "E0182",
                     format!("`{g}` is not a continuous variable of this chart"),
                     "declare it with `continuous NAME: [lo .. hi];`",
                 );
@@ -235,7 +235,7 @@ impl Cx<'_, '_> {
             let Some(p) = plans.iter_mut().find(|p| p.var == var.name) else {
                 self.error(
                     span,
-                    "E0172",
+                    "E0182",
                     format!("`{}` is not a continuous variable of this chart", var.name),
                     "declare it with `continuous NAME: [lo .. hi];`",
                 );
@@ -250,7 +250,7 @@ impl Cx<'_, '_> {
             if !is_bool {
                 self.error(
                     span,
-                    "E0172",
+                    "E0182",
                     format!(
                         "sensor `{}` must be a `bool` output or local of the chart",
                         out.name
@@ -262,7 +262,7 @@ impl Cx<'_, '_> {
             if p.sensors.iter().any(|s| s.0 == out.name) {
                 self.error(
                     span,
-                    "E0172",
+                    "E0182",
                     format!("`{}` is the output of two sensors", out.name),
                     "one sensor per output",
                 );
@@ -309,13 +309,13 @@ impl Cx<'_, '_> {
             Some((Some(n), span)) => {
                 let width = p.hi as i128 - p.lo as i128;
                 if width % n as i128 != 0 {
-                    self.error(span, "E0170", format!("{n} equal cells of `{}` ({} .. {}) are not whole numbers wide", p.var, p.lo, p.hi), "choose a number of cells that divides the range's width, or scale the variable's unit");
+                    self.error(span, "E0180", format!("{n} equal cells of `{}` ({} .. {}) are not whole numbers wide", p.var, p.lo, p.hi), "choose a number of cells that divides the range's width, or scale the variable's unit");
                     return;
                 }
                 if n as usize > MAX_POINTS {
                     self.error(
                         span,
-                        "E0170",
+                        "E0180",
                         format!("a grid of {n} cells is more than the {MAX_POINTS} points allowed"),
                         "use fewer cells",
                     );
@@ -342,7 +342,7 @@ impl Cx<'_, '_> {
         if pts.len() > MAX_POINTS {
             self.error(
                 p.span,
-                "E0170",
+                "E0180",
                 format!(
                     "`{}` needs {} grid points, more than the {MAX_POINTS} allowed",
                     p.var,
