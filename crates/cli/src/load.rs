@@ -22,7 +22,7 @@ pub fn set_lib_dirs(dirs: Vec<String>) {
 }
 
 /// The library search path: `--lib` directories, then `STATECHECK_PATH`'s.
-fn search_path() -> Vec<PathBuf> {
+pub fn search_path() -> Vec<PathBuf> {
     let mut dirs: Vec<PathBuf> = LIB_DIRS.get().cloned().unwrap_or_default();
     if let Some(p) = std::env::var_os("STATECHECK_PATH") {
         dirs.extend(std::env::split_paths(&p).filter(|d| !d.as_os_str().is_empty()));

@@ -4,6 +4,7 @@
 //! diagnostics, traces and reports, and maps outcomes to exit codes
 //! (0 ok, 1 model or run-time error, 2 usage error, 4 a property was violated in a run).
 
+mod analyse_cmd;
 mod diag;
 mod diag_json;
 mod export_cmd;
@@ -13,6 +14,7 @@ mod load;
 mod outpath;
 mod output;
 mod serve_cmd;
+mod show_cmd;
 mod sim_cmd;
 mod sim_sink;
 mod supervisor;
@@ -76,6 +78,12 @@ enum Command {
     Synth(synth_cmd::SynthArgs),
     /// Serve the validation studio: a local web page that animates the charts.
     Serve(serve_cmd::ServeArgs),
+    /// The exact times of a model's continuous motion: clock readings, or, along a scenario,
+    /// when each critical point is reached (docs/hybrid.md).
+    Analyse(analyse_cmd::AnalyseArgs),
+    /// Print a model as the checker sees it: `--discretized` shows continuous variables as
+    /// grid variables, modes and timers (docs/hybrid.md).
+    Show(show_cmd::ShowArgs),
     /// Rewrite model files in the canonical layout (`--check`: only report).
     Fmt(fmt_cmd::FmtArgs),
     /// Explain a diagnostic code (`statecheck explain E0111`); without a code, list them all.
@@ -169,6 +177,8 @@ fn run(cli: Cli) -> Result<u8> {
         Command::Synth(args) => synth_cmd::run(args),
         Command::Serve(args) => serve_cmd::run(args),
         Command::Fmt(args) => fmt_cmd::run(args),
+        Command::Show(args) => show_cmd::run(args),
+        Command::Analyse(args) => analyse_cmd::run(args),
         Command::Explain { code } => explain(code.as_deref()),
         Command::Lsp => {
             statecheck_lsp::serve_stdio()?;

@@ -37,6 +37,7 @@ pub fn run(a: ServeArgs) -> Result<u8> {
         bind: a.bind,
         port: a.port,
         token: None,
+        lib: crate::load::search_path(),
     })?;
     if !a.bind.is_loopback() {
         eprintln!(

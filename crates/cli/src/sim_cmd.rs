@@ -88,13 +88,12 @@ pub fn run(a: SimArgs) -> Result<u8> {
     } else {
         Format::Table
     };
-    let tick_ms = loaded.model.tick_ms.unwrap_or(1);
     let sink = |views| {
         SimSink::new(
             &program,
             views,
             format,
-            a.vcd.as_deref().map(|f| (f, tick_ms)),
+            a.vcd.as_deref(),
             a.save_scenario.as_deref(),
         )
     };
@@ -212,13 +211,15 @@ pub fn run(a: SimArgs) -> Result<u8> {
             NoInput::Deadlock { assume } => {
                 status = "deadlock";
                 format!(
-                    "deadlock at tick {tick}: no input satisfies the `assume`s (`assume` #{} blocks) in {after}: {state}",
+                    "deadlock at {}: no input satisfies the `assume`s (`assume` #{} blocks) in {after}: {state}",
+                    program.tick_label(tick),
                     assume + 1,
                 )
             }
             NoInput::NotFound { assume } => format!(
-                "no random inputs satisfying `assume` #{} found at tick {tick} within {} draws, in {after}: {state}",
+                "no random inputs satisfying `assume` #{} found at {} within {} draws, in {after}: {state}",
                 assume + 1,
+                program.tick_label(tick),
                 statecheck_sim::random::MAX_TRIES,
             ),
         };
@@ -231,6 +232,12 @@ pub fn run(a: SimArgs) -> Result<u8> {
             .map(|(n, t)| (n.clone(), serde_json::json!(t)))
             .collect();
         let mut result = serde_json::json!({"status": status, "message": message});
+        if let Some(t) = program
+            .seconds(tick_of(&run.stop))
+            .filter(|_| result_tick(&run.stop))
+        {
+            result["time"] = serde_json::json!(t);
+        }
         match &run.stop {
             Stop::Violation { tick, property } => {
                 result["tick"] = serde_json::json!(tick);
@@ -336,6 +343,11 @@ fn tick_of(stop: &Stop) -> u64 {
     }
 }
 
+/// Whether the JSON result of a run that ended with `stop` names a tick.
+fn result_tick(stop: &Stop) -> bool {
+    !matches!(stop, Stop::Completed)
+}
+
 /// Status word, exit code and a message for how a run ended.
 fn describe_stop(
     stop: &Stop,
@@ -347,7 +359,7 @@ fn describe_stop(
         Stop::Violation { tick, property } => (
             "violated",
             4,
-            format!("property `{property}` violated at tick {tick}"),
+            format!("property `{property}` violated at {}", p.tick_label(*tick)),
         ),
         Stop::RuntimeError { tick, error } => {
             let at = p
@@ -358,7 +370,8 @@ fn describe_stop(
                 "runtime_error",
                 1,
                 format!(
-                    "run-time error at tick {tick}: {}{}",
+                    "run-time error at {}: {}{}",
+                    p.tick_label(*tick),
                     p.describe_error(error),
                     at.unwrap_or_default()
                 ),
@@ -377,7 +390,7 @@ fn describe_stop(
 
 /// Scenario errors as diagnostics (byte spans from their 1-based line and column), so that
 /// they render like the model's and follow `--message-format`.
-fn scenario_diagnostics(
+pub(crate) fn scenario_diagnostics(
     text: &str,
     errs: &[scenario::ScenarioError],
 ) -> Vec<statecheck_base::Diagnostic> {

@@ -62,7 +62,7 @@ impl<'a> SimSink<'a> {
         p: &'a Program,
         views: &'a Views,
         format: Format,
-        vcd: Option<(&str, i64)>,
+        vcd: Option<&str>,
         scenario: Option<&str>,
     ) -> Result<SimSink<'a>> {
         let mut s = SimSink {
@@ -82,8 +82,8 @@ impl<'a> SimSink<'a> {
             ticks: 0,
             error: None,
         };
-        if let Some((path, tick_ms)) = vcd {
-            let (stream, header) = output::vcd::Stream::new(p, views, tick_ms);
+        if let Some(path) = vcd {
+            let (stream, header) = output::vcd::Stream::new(p, views);
             let mut out = Out::create(path)?;
             write_file(&mut out, &header, &mut s.error);
             s.vcd = Some((stream, out));
@@ -97,7 +97,7 @@ impl<'a> SimSink<'a> {
         match s.format {
             Format::Json => s.print("{\"ticks\":["),
             Format::Csv => {
-                let h = output::csv::header(views);
+                let h = output::csv::header(p, views);
                 s.print(&h);
             }
             Format::Table | Format::Quiet => {}

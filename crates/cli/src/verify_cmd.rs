@@ -147,6 +147,8 @@ impl From<BackendArg> for Backend {
 
 /// Run the command; returns the exit code.
 pub fn run(a: VerifyArgs) -> Result<u8> {
+    // `--timeout` counts from here: reading, checking and lowering the model are inside it.
+    let started = std::time::Instant::now();
     if let Some(plant) = &a.plant {
         let (sys, psys) = (a.system.as_deref(), a.plant_system.as_deref());
         return crate::supervisor::verify_supervisor(&a.model, sys, plant, psys, a.quiet);
@@ -177,7 +179,7 @@ pub fn run(a: VerifyArgs) -> Result<u8> {
     let sys = loaded.system_in(a.system.as_deref(), a.config.as_deref())?;
     if a.all_configs {
         let base = sys.name.clone();
-        let check = options(&a, max_memory, timeout);
+        let check = options(&a, max_memory, remaining(timeout, started));
         let cancel = statecheck_verify::Cancel::new();
         watch::on_interrupt(&cancel);
         let _memory = max_memory.map(|m| watch::memory(&cancel, m));
@@ -201,7 +203,7 @@ pub fn run(a: VerifyArgs) -> Result<u8> {
     if a.certificate.is_some() && a.engine != symbolic::EngineArg::Ic3 {
         bail!("--certificate needs --engine ic3");
     }
-    let opts = options(&a, max_memory, timeout);
+    let opts = options(&a, max_memory, remaining(timeout, started));
     let engine: statecheck_verify::Engine = a.engine.into();
     if a.workers.is_some() {
         if !matches!(
@@ -288,6 +290,12 @@ pub fn run(a: VerifyArgs) -> Result<u8> {
 }
 
 /// The engines' options from the flags.
+/// What is left of `timeout` since `started` (zero when it has passed: the engines then answer
+/// `unknown` at once).
+fn remaining(timeout: Option<Duration>, started: std::time::Instant) -> Option<Duration> {
+    timeout.map(|t| t.saturating_sub(started.elapsed()))
+}
+
 fn options(a: &VerifyArgs, max_memory: Option<u64>, timeout: Option<Duration>) -> Options {
     Options {
         properties: a.properties.clone(),

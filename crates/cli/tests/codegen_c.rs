@@ -51,6 +51,13 @@ fn cases() -> Vec<(PathBuf, Option<&'static str>, Vec<PathBuf>)> {
             scns(&root.join("examples/linear_drive/scenarios"), &|_| true),
         ),
     ];
+    // A model of composite components: flattened before lowering, so the C is that of the
+    // flat system, with instances named by path.
+    out.push((
+        root.join("tests/components/cell.sc"),
+        None,
+        vec![root.join("tests/components/cell.scn")],
+    ));
     let sem = root.join("tests/semantics");
     for name in [
         "choice", "history", "order", "parallel", "params", "priority", "runtime", "timers",

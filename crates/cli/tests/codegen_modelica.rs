@@ -459,7 +459,7 @@ fn scenario_inputs(p: &Program, sc: &statecheck_sim::Scenario, upto: usize) -> V
                 v[k] = 0;
             }
         }
-        for &(k, x) in sc.ticks.get(t).map_or(&[][..], |c| &c[..]) {
+        for &(k, x) in sc.tick(t).unwrap_or(&[]) {
             v[k] = x;
         }
     }

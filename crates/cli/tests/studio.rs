@@ -85,7 +85,7 @@ impl Page {
         let ticks = sim["ticks"].as_array().expect("sim ticks");
         assert_eq!(ticks.len(), self.records.len(), "tick count");
         for (page, s) in self.records.iter().zip(ticks) {
-            for key in ["tick", "active", "vars", "events"] {
+            for key in ["tick", "time", "active", "vars", "events"] {
                 assert_eq!(page[key], s[key], "tick {}: `{key}` differs", s["tick"]);
             }
         }

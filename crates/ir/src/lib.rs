@@ -15,6 +15,7 @@ mod layout;
 pub mod lower;
 mod program;
 pub mod temporal;
+pub mod time;
 pub mod verdict;
 pub mod view;
 mod vm;

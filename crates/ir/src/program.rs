@@ -461,6 +461,9 @@ pub struct Program {
     pub started: SlotId,
     /// Number of expression locals (see [`Node::Let`]).
     pub n_locals: usize,
+    /// The declared length of one tick in milliseconds (`tick 100 ms;`), `None` when the model
+    /// declares none (then nothing shows a time; see [`crate::time`]).
+    pub tick_ms: Option<i64>,
     /// What the interpreter derives from the program once (its register code, `crate::vm`).
     pub(crate) run_cache: RunCache,
 }

@@ -70,8 +70,6 @@ pub struct TraceView {
     pub var_columns: Vec<Column>,
     /// The events a readable trace shows, likewise.
     pub event_columns: Vec<Column>,
-    /// The declared tick length in milliseconds (`tick 100 ms;`), for a time column.
-    pub tick_ms: Option<i64>,
 }
 
 impl TraceView {
@@ -137,7 +135,6 @@ impl TraceView {
             events,
             var_columns,
             event_columns,
-            tick_ms: model.tick_ms,
         }
     }
 

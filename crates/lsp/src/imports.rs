@@ -146,6 +146,7 @@ pub(crate) fn definition(
             ast::Item::Chart(c) => &c.name,
             ast::Item::System(s) => &s.name,
             ast::Item::Interface(d) => &d.name,
+            ast::Item::Component(c) => &c.name,
             ast::Item::Tick(_) | ast::Item::Import(_) => return None,
         };
         (id.name == name && id.span.start as usize >= root_end).then_some(id.span)

@@ -9,7 +9,7 @@
 
 use statecheck_base::Span;
 use statecheck_syntax::ast::{
-    Block, Branch, Chart, Delay, Expr, File, Index as Idx, Item, Path, PropertyKind,
+    Block, Branch, Chart, Component, Delay, Expr, File, Index as Idx, Item, Path, PropertyKind,
     RequirementKind, StateBody, Stmt, System, Target, Trigger, TypeExpr, VarKind,
 };
 
@@ -185,7 +185,7 @@ impl Builder {
                     }
                 }
                 Item::Chart(c) => self.declare_chart(c, None),
-                Item::System(s) => {
+                Item::System(s) | Item::Component(Component { body: s, .. }) => {
                     let id = self.add(&s.name.name, SymKind::System, s.name.span, s.span, None);
                     for i in &s.instances {
                         let iid = self.add(
@@ -336,7 +336,12 @@ impl Builder {
                     }
                     self.expr(&c.value, &Ctx::default());
                 }
-                Item::Enum(_) | Item::Tick(_) | Item::Import(_) | Item::Interface(_) => {}
+                // Components are declared (navigable by name) but their bodies not resolved yet.
+                Item::Enum(_)
+                | Item::Tick(_)
+                | Item::Import(_)
+                | Item::Interface(_)
+                | Item::Component(_) => {}
                 Item::Fn(f) => {
                     let id = self.global(&f.name.name, |k| k == SymKind::Fn);
                     let cx = Ctx {
@@ -555,7 +560,10 @@ impl Builder {
             } => {
                 self.expr(trigger, cx);
                 self.expr(response, cx);
-                self.expr(within, cx);
+                match within {
+                    Delay::Ticks(e) => self.expr(e, cx),
+                    Delay::Time(d) => self.expr(&d.amount, cx),
+                }
             }
             PropertyKind::RespondEventually { trigger, response } => {
                 self.expr(trigger, cx);

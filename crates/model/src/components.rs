@@ -31,14 +31,26 @@ pub(crate) struct Expanded {
 /// Expand configurations and check slots; `None` when the file has neither.
 pub(crate) fn expand(file: &ast::File, diags: &mut Vec<Diagnostic>) -> Option<Expanded> {
     let mut interfaces: HashMap<&str, &ast::InterfaceDecl> = HashMap::new();
-    let mut charts: HashMap<&str, &ast::Chart> = HashMap::new();
+    // Charts and composite components: what an instance or a slot binding may name.
+    let mut charts: HashMap<&str, Impl<'_>> = HashMap::new();
     for item in &file.items {
         match item {
             ast::Item::Interface(i) => {
                 interfaces.entry(i.name.name.as_str()).or_insert(i);
             }
             ast::Item::Chart(c) => {
-                charts.entry(c.name.name.as_str()).or_insert(c);
+                charts.entry(c.name.name.as_str()).or_insert(Impl {
+                    name: &c.name,
+                    implements: &c.implements,
+                    kind: "chart",
+                });
+            }
+            ast::Item::Component(c) => {
+                charts.entry(c.name.name.as_str()).or_insert(Impl {
+                    name: &c.name,
+                    implements: &c.implements,
+                    kind: "component",
+                });
             }
             _ => {}
         }
@@ -127,13 +139,21 @@ pub(crate) fn expand(file: &ast::File, diags: &mut Vec<Diagnostic>) -> Option<Ex
     Some(Expanded { file: out, origins })
 }
 
+/// A chart or composite component, as a configuration may bind it.
+struct Impl<'a> {
+    name: &'a ast::Ident,
+    implements: &'a [ast::Ident],
+    /// `chart` or `component`, for messages.
+    kind: &'static str,
+}
+
 /// The system `s` in configuration `c`: each bound instance gets the chosen chart and
 /// arguments. Reports unknown instances, slots left unbound and charts a slot cannot take.
 fn configure(
     s: &ast::System,
     c: &ast::Configuration,
     slots: &HashMap<&str, &ast::InterfaceDecl>,
-    charts: &HashMap<&str, &ast::Chart>,
+    charts: &HashMap<&str, Impl<'_>>,
     diags: &mut Vec<Diagnostic>,
 ) -> ast::System {
     let mut out = s.clone();
@@ -143,7 +163,14 @@ fn configure(
         span: c.name.span,
     };
     let mut bound: HashMap<&str, Span> = HashMap::new();
+    // A binding by path (`storage.feeder.home = …`) names a slot inside a component instance:
+    // it waits for the flattening (`composite::bind_paths`).
+    let mut by_path = Vec::new();
     for b in &c.bindings {
+        if b.instance.name.contains('.') {
+            by_path.push(b.clone());
+            continue;
+        }
         let Some(inst) = out
             .instances
             .iter_mut()
@@ -189,16 +216,16 @@ fn configure(
                             Diagnostic::error(
                                 "E0156",
                                 format!(
-                                    "chart `{}` does not implement interface `{}` of slot `{}`",
-                                    b.chart.name, itf.name.name, b.instance.name
+                                    "{} `{}` does not implement interface `{}` of slot `{}`",
+                                    ch.kind, b.chart.name, itf.name.name, b.instance.name
                                 ),
                                 b.chart.span,
                             )
                             .with_label(format!("not declared `implements {}`", itf.name.name))
-                            .with_secondary(ch.name.span, "chart declared here")
+                            .with_secondary(ch.name.span, format!("{} declared here", ch.kind))
                             .with_hint(format!(
-                                "write `chart {} implements {} {{ … }}` (the checker then verifies that it conforms)",
-                                b.chart.name, itf.name.name
+                                "write `{} {} implements {} {{ … }}` (the checker then verifies that it conforms)",
+                                ch.kind, b.chart.name, itf.name.name
                             )),
                         );
                     }
@@ -228,6 +255,13 @@ fn configure(
         }
         inst.chart = b.chart.clone();
         inst.args = b.args.clone();
+    }
+    if !by_path.is_empty() {
+        out.configurations = vec![ast::Configuration {
+            name: c.name.clone(),
+            bindings: by_path,
+            span: c.span,
+        }];
     }
     for i in &s.instances {
         if let Some(itf) = slots.get(i.name.name.as_str()) {
@@ -403,23 +437,7 @@ fn member(
     }
     let Some(t) = &m.ty else { return };
     let want = ck.resolve_type(t);
-    let fits = match (want, v.ty) {
-        (Type::Int { lo, hi }, Type::Int { lo: vl, hi: vh }) => match mkind {
-            // The chart must accept every value the interface lets others send it ...
-            VarKind::Input => vl <= lo && hi <= vh,
-            // ... and may send only values the interface promises.
-            _ => lo <= vl && vh <= hi,
-        },
-        (a, b) => a == b,
-    };
-    if !fits {
-        let rule = match (want, mkind) {
-            (Type::Int { .. }, VarKind::Input) => {
-                "an input's range must contain the interface's range"
-            }
-            (Type::Int { .. }, _) => "an output's range must lie within the interface's range",
-            _ => "the types must be the same",
-        };
+    if let Err(rule) = fits(mkind, want, v.ty) {
         let (wn, vn) = (
             crate::expr::type_name(ck.globals, want),
             crate::expr::type_name(ck.globals, v.ty),
@@ -438,6 +456,28 @@ fn member(
             .with_hint(rule.to_string()),
         );
     }
+}
+
+/// Whether a port of type `got` conforms to a declared port `want` of direction `kind`;
+/// otherwise the rule it breaks.
+pub(crate) fn fits(kind: VarKind, want: Type, got: Type) -> Result<(), &'static str> {
+    let ok = match (want, got) {
+        (Type::Int { lo, hi }, Type::Int { lo: vl, hi: vh }) => match kind {
+            // The chart must accept every value the interface lets others send it ...
+            VarKind::Input => vl <= lo && hi <= vh,
+            // ... and may send only values the interface promises.
+            _ => lo <= vl && vh <= hi,
+        },
+        (a, b) => a == b,
+    };
+    if ok {
+        return Ok(());
+    }
+    Err(match (want, kind) {
+        (Type::Int { .. }, VarKind::Input) => "an input's range must contain the interface's range",
+        (Type::Int { .. }, _) => "an output's range must lie within the interface's range",
+        _ => "the types must be the same",
+    })
 }
 
 /// The declaration of an interface port as a chart would write it.

@@ -360,6 +360,7 @@ impl Loader<'_> {
             items.extend(file.items.into_iter().filter(|it| match it {
                 ast::Item::Chart(c) => keep.as_ref().is_none_or(|k| k.contains(&c.name.name)),
                 ast::Item::System(s) => keep.as_ref().is_none_or(|k| k.contains(&s.name.name)),
+                ast::Item::Component(c) => keep.as_ref().is_none_or(|k| k.contains(&c.name.name)),
                 _ => true,
             }));
         }
@@ -372,20 +373,30 @@ impl Loader<'_> {
     }
 }
 
-/// The charts and systems kept of a file imported with lists `wanted` (`None`: all): the
-/// listed ones and the charts their systems instantiate.
+/// The charts, components and systems kept of a file imported with lists `wanted` (`None`:
+/// all): the listed ones and the charts and components their systems and components
+/// instantiate (transitively) or bind in configurations.
 fn kept_charts(file: &ast::File, wanted: Option<&BTreeSet<String>>) -> Option<BTreeSet<String>> {
     let mut keep = wanted?.clone();
-    for it in &file.items {
-        if let ast::Item::System(s) = it {
-            if keep.contains(&s.name.name) {
-                keep.extend(s.instances.iter().map(|i| i.chart.name.clone()));
-                let bound = s.configurations.iter().flat_map(|c| &c.bindings);
+    // Each round adds what the kept systems and components use; a file has finitely many.
+    loop {
+        let before = keep.len();
+        for it in &file.items {
+            let body = match it {
+                ast::Item::System(s) => s,
+                ast::Item::Component(c) => &c.body,
+                _ => continue,
+            };
+            if keep.contains(&body.name.name) {
+                keep.extend(body.instances.iter().map(|i| i.chart.name.clone()));
+                let bound = body.configurations.iter().flat_map(|c| &c.bindings);
                 keep.extend(bound.map(|b| b.chart.name.clone()));
             }
         }
+        if keep.len() == before {
+            return Some(keep);
+        }
     }
-    Some(keep)
 }
 
 /// The name an item declares, if any.
@@ -397,6 +408,7 @@ fn item_name(it: &ast::Item) -> Option<&str> {
         ast::Item::Chart(c) => &c.name.name,
         ast::Item::System(s) => &s.name.name,
         ast::Item::Interface(i) => &i.name.name,
+        ast::Item::Component(c) => &c.name.name,
         ast::Item::Tick(_) | ast::Item::Import(_) => return None,
     })
 }

@@ -10,8 +10,11 @@
 mod cascade;
 mod chart;
 pub mod components;
+mod composite;
+mod duration;
 mod expr;
 pub mod formula;
+pub mod hybrid;
 pub mod imports;
 pub mod lint;
 pub mod model;
@@ -37,15 +40,28 @@ use std::collections::HashMap;
 /// Check a parsed file. Always returns a model (possibly incomplete) and all diagnostics,
 /// including design-rule warnings; the model is usable only if no diagnostic is an error.
 pub fn check(file: &ast::File) -> (Model, Vec<Diagnostic>) {
+    let original = file;
     let mut globals = Globals::default();
     let mut early = Vec::new();
     collect_globals(file, &mut globals, &mut early);
     check_consts_and_fns(file, &mut globals, &mut early);
+    // Continuous variables become grid variables, modes and timers (`hybrid/`).
+    let discretized = hybrid::discretize(file, &globals, &hybrid::before_expansion, &mut early);
+    let file = match &discretized {
+        Some(d) => &d.file,
+        None => file,
+    };
     // Systems with configurations become one system per configuration (`components.rs`).
     let configured = components::expand(file, &mut early);
     let (file, sys_origins) = match &configured {
         Some(c) => (&c.file, c.origins.as_slice()),
         None => (file, &[][..]),
+    };
+    // Component instances become their inner instances, systems flat (`composite/`).
+    let flattened = composite::flatten(file, &mut early);
+    let (file, sys_origins) = match &flattened {
+        Some(f) => (&f.file, sys_origins),
+        None => (file, sys_origins),
     };
     // Parameterised charts become one ordinary chart per argument list (`params.rs`).
     let expanded = {
@@ -78,6 +94,22 @@ pub fn check(file: &ast::File) -> (Model, Vec<Diagnostic>) {
             (&e.file, e.origins.as_slice())
         }
         None => (file, &[][..]),
+    };
+    // Copies of parameterised charts with continuous variables are discretized now, each
+    // with its arguments; a copy with placeholder values only declares the variables.
+    let copies = expanded.as_ref().and_then(|_| {
+        let treat = |_: &ast::Chart, id: usize| match origins.get(id) {
+            Some(params::Origin::Placeholder) => hybrid::Treat::DeclareOnly,
+            _ => hybrid::Treat::Discretize,
+        };
+        let mut ds = Vec::new();
+        let d = hybrid::discretize(file, &globals, &treat, &mut ds);
+        early.extend(ds);
+        d
+    });
+    let file = match &copies {
+        Some(d) => &d.file,
+        None => file,
     };
     let origin = |id: usize| origins.get(id).unwrap_or(&params::Origin::Plain);
     let globals_ref = &globals;
@@ -120,6 +152,10 @@ pub fn check(file: &ast::File) -> (Model, Vec<Diagnostic>) {
             params::annotate(&mut ck.sink.diags, before, origin(id), &c.name.name);
         }
     }
+    if let Some(f) = &flattened {
+        composite::conformance(file, &f.components, &mut ck);
+        composite::check_ports(file, &f.links, &charts, &mut ck);
+    }
 
     let mut systems = Vec::new();
     let mut system_names: HashMap<String, Span> = HashMap::new();
@@ -149,6 +185,11 @@ pub fn check(file: &ast::File) -> (Model, Vec<Diagnostic>) {
                         .with_secondary(at, format!("in configuration `{config}`"));
                 }
             }
+        }
+    }
+    if let Some(f) = &flattened {
+        for s in &mut systems {
+            s.implicit |= f.standalone.contains(&s.name);
         }
     }
     // Every top-level chart can also run alone, as a system of one instance named like it.
@@ -200,14 +241,29 @@ pub fn check(file: &ast::File) -> (Model, Vec<Diagnostic>) {
     let mut diags = ck.sink.diags;
     cascade::suppress(file, &mut diags);
     if !diags.iter().any(Diagnostic::is_error) {
-        diags.extend(lint::lint(&model));
+        let generated = hybrid::generated_spans(original);
+        diags.extend(
+            lint::lint(&model)
+                .into_iter()
+                .filter(|d| !generated.contains(&d.span)),
+        );
     }
     diags.sort_by_key(|d| (d.span.start, d.span.end));
-    if expanded.is_some() || configured.is_some() {
+    if expanded.is_some() || configured.is_some() || flattened.is_some() {
         params::dedup(&mut diags);
         components::suppress_slot_cascades(file, &mut diags);
     }
     (model, diags)
+}
+
+/// The file's constants, enums, functions and tick, with their diagnostics dropped (for
+/// passes that run outside [`check`]).
+pub(crate) fn globals_of(file: &ast::File) -> Globals {
+    let mut globals = Globals::default();
+    let mut sink = Vec::new();
+    collect_globals(file, &mut globals, &mut sink);
+    check_consts_and_fns(file, &mut globals, &mut sink);
+    globals
 }
 
 fn collect_globals(file: &ast::File, g: &mut Globals, diags: &mut Vec<Diagnostic>) {
@@ -292,6 +348,9 @@ fn collect_globals(file: &ast::File, g: &mut Globals, diags: &mut Vec<Diagnostic
             }
             ast::Item::Interface(i) => {
                 declare(&i.name, diags);
+            }
+            ast::Item::Component(c) => {
+                declare(&c.name, diags);
             }
             ast::Item::System(_) | ast::Item::Import(_) => {}
             ast::Item::Tick(t) => {

@@ -560,6 +560,9 @@ impl Subst {
         for blk in b.entry.iter_mut().chain(&mut b.during).chain(&mut b.exit) {
             self.block(blk);
         }
+        for h in &mut b.hybrid {
+            self.hybrid(h);
+        }
         for i in &mut b.initial {
             if let Some(a) = &mut i.action {
                 self.block(a);
@@ -589,6 +592,47 @@ impl Subst {
             }
             if let Some(target) = &mut t.target {
                 self.target(target);
+            }
+        }
+    }
+
+    /// A continuous-variable element (`docs/hybrid.md`): bounds, cells and speeds may name
+    /// parameters.
+    fn hybrid(&mut self, h: &mut ast::HybridElem) {
+        match h {
+            ast::HybridElem::Continuous { lo, hi, init, .. } => {
+                self.expr(lo);
+                self.expr(hi);
+                if let Some(i) = init {
+                    self.expr(i);
+                }
+            }
+            ast::HybridElem::Grid { cells, .. } => {
+                if let Some(c) = cells {
+                    self.expr(c);
+                }
+            }
+            ast::HybridElem::Sensor { lo, hi, .. } => {
+                self.expr(lo);
+                self.expr(hi);
+            }
+            ast::HybridElem::Der { rate, .. } => match rate {
+                ast::SpeedExpr::Constant(s) => self.speed(s),
+                ast::SpeedExpr::Profile(segs, last) => {
+                    for (s, d) in segs.iter_mut() {
+                        self.speed(s);
+                        self.expr(&mut d.amount);
+                    }
+                    self.speed(last);
+                }
+            },
+        }
+    }
+
+    fn speed(&mut self, s: &mut ast::Speed) {
+        for n in std::iter::once(&mut s.num).chain(s.den.as_mut()) {
+            if let ast::SpeedNumber::Expr(e) = n {
+                self.expr(e);
             }
         }
     }
@@ -629,7 +673,10 @@ impl Subst {
             } => {
                 self.expr(trigger);
                 self.expr(response);
-                self.expr(within);
+                match within {
+                    ast::Delay::Ticks(e) => self.expr(e),
+                    ast::Delay::Time(d) => self.expr(&mut d.amount),
+                }
             }
             ast::PropertyKind::RespondEventually { trigger, response } => {
                 self.expr(trigger);

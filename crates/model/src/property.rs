@@ -29,13 +29,17 @@ pub(crate) fn check_properties(
                     response,
                     within,
                 } => {
-                    let n = ck.const_value(scope, within).unwrap_or(0);
+                    let n = crate::duration::delay_ticks(ck, scope, within).unwrap_or(0);
+                    let span = match within {
+                        ast::Delay::Ticks(e) => e.span(),
+                        ast::Delay::Time(d) => d.span,
+                    };
                     if !(0..=1_000_000).contains(&n) {
                         ck.sink.push(
                             Diagnostic::error(
                                 "E0104",
                                 format!("`within {n}` must be between 0 and 1000000 ticks"),
-                                within.span(),
+                                span,
                             )
                             .with_label("out of range"),
                         );

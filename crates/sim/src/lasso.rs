@@ -30,7 +30,7 @@ pub fn run_lasso(program: &Program, sc: &Scenario, opts: Options) -> LassoRun {
     };
     let first = run(program, &mut ScenarioInputs::new(sc), opts);
     let k = sc.loop_start.unwrap_or(0);
-    let t = sc.ticks.len();
+    let t = sc.len();
     if first.stop != Stop::Completed || k == 0 || k >= t || first.trace.len() != t {
         return LassoRun {
             run: first,

@@ -13,6 +13,7 @@
 //! as minimised so far.
 
 use crate::run::{tick_once, unreached, Stop};
+use statecheck_ir::verdict::{PropKind, PropResult};
 use statecheck_ir::{Machine, Program};
 
 /// Most ticks replayed by one minimisation.
@@ -27,6 +28,26 @@ pub enum Target {
     RuntimeError(String),
     /// This `reachable` property first holds at the last tick.
     Reached(String),
+}
+
+impl Target {
+    /// What the minimised trace of a checker's result must still show, or `None` for the
+    /// traces that are not minimised: lassos, CTL and nonblocking paths (the simulator does not
+    /// evaluate them) and deadlocks. Shared by every consumer that minimises (the CLI, the
+    /// studio), so that they show the same trace.
+    pub fn of(r: &PropResult) -> Option<Target> {
+        if r.loop_start.is_some() {
+            return None;
+        }
+        let name = r.name.clone();
+        match r.kind {
+            PropKind::Ctl | PropKind::Nonblocking => None,
+            PropKind::Reachable => Some(Target::Reached(name)),
+            PropKind::Builtin if r.name == "deadlock_free" => None,
+            PropKind::Builtin => Some(Target::RuntimeError(name)),
+            _ => Some(Target::Violation(name)),
+        }
+    }
 }
 
 /// How a replay of ticks `from..` ended: the stop (if any) and the tick at which the target

@@ -148,7 +148,7 @@ impl<'s> ScenarioInputs<'s> {
 
 impl InputSource for ScenarioInputs<'_> {
     fn next(&mut self, tick: u64, machine: &Machine, inputs: &mut [i64]) -> Result<bool, NoInput> {
-        let Some(changes) = self.scenario.ticks.get(tick as usize) else {
+        let Some(changes) = self.scenario.tick(tick as usize) else {
             return Ok(false);
         };
         let p = machine.program();

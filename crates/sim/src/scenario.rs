@@ -14,13 +14,134 @@
 use statecheck_ir::Program;
 
 /// The inputs of a run: for each tick, the inputs that change (and the events present).
-#[derive(Clone, Debug, Default, PartialEq, Eq)]
+///
+/// Stored run-length encoded, one entry per line of the file: `- * 100000000` is one entry,
+/// not 10^8, so memory grows with the file, not with the ticks it stands for.
+#[derive(Clone, Debug, Default)]
 pub struct Scenario {
-    /// For each tick, `(index into Program::inputs, value)` pairs.
-    pub ticks: Vec<Vec<(usize, i64)>>,
+    /// `(changes, repeat)`: `changes` (`(index into Program::inputs, value)` pairs) in each of
+    /// `repeat ≥ 1` consecutive ticks.
+    lines: Vec<(Vec<(usize, i64)>, usize)>,
+    /// The first tick of each entry of `lines` (ascending), for lookup by tick.
+    starts: Vec<usize>,
+    /// The number of ticks.
+    total: usize,
     /// A lasso's first loop tick (a `loop:` line before it): after the last tick the state
     /// after tick `loop_start - 1` recurs and the loop repeats forever (`crate::lasso`).
     pub loop_start: Option<usize>,
+}
+
+/// Two scenarios are equal when they give the same changes in every tick and the same loop,
+/// however their lines are split.
+impl PartialEq for Scenario {
+    fn eq(&self, other: &Self) -> bool {
+        self.total == other.total
+            && self.loop_start == other.loop_start
+            && self.runs() == other.runs()
+    }
+}
+
+impl Eq for Scenario {}
+
+impl Scenario {
+    /// The lines with equal neighbours merged.
+    fn runs(&self) -> Vec<(&[(usize, i64)], usize)> {
+        let mut out: Vec<(&[(usize, i64)], usize)> = Vec::with_capacity(self.lines.len());
+        for (c, n) in &self.lines {
+            match out.last_mut() {
+                Some((last, m)) if *last == c.as_slice() => *m += n,
+                _ => out.push((c, *n)),
+            }
+        }
+        out
+    }
+
+    /// An empty scenario.
+    pub fn new() -> Self {
+        Scenario::default()
+    }
+
+    /// The number of ticks.
+    pub fn len(&self) -> usize {
+        self.total
+    }
+
+    /// True when the scenario has no tick.
+    pub fn is_empty(&self) -> bool {
+        self.total == 0
+    }
+
+    /// The changes of tick `t` (0-based), or `None` past the end.
+    pub fn tick(&self, t: usize) -> Option<&[(usize, i64)]> {
+        if t >= self.total {
+            return None;
+        }
+        let i = self.starts.partition_point(|&s| s <= t) - 1;
+        Some(&self.lines[i].0)
+    }
+
+    /// Every tick's changes in order (a repeated line is yielded once per tick).
+    pub fn ticks(&self) -> impl Iterator<Item = &[(usize, i64)]> + '_ {
+        self.lines
+            .iter()
+            .flat_map(|(c, n)| std::iter::repeat_n(c.as_slice(), *n))
+    }
+
+    /// Append `repeat` ticks with the same changes (nothing when `repeat` is 0). Consecutive
+    /// equal lines are merged.
+    pub fn push_repeated(&mut self, changes: Vec<(usize, i64)>, repeat: usize) {
+        if repeat == 0 {
+            return;
+        }
+        self.total += repeat;
+        if let Some((last, n)) = self.lines.last_mut() {
+            if *last == changes {
+                *n += repeat;
+                return;
+            }
+        }
+        self.starts.push(self.total - repeat);
+        self.lines.push((changes, repeat));
+    }
+
+    /// Append one tick.
+    pub fn push(&mut self, changes: Vec<(usize, i64)>) {
+        self.push_repeated(changes, 1);
+    }
+
+    /// Replace the changes of tick `t` (a repeated line is split around it); nothing past the
+    /// end.
+    pub fn set_tick(&mut self, t: usize, changes: Vec<(usize, i64)>) {
+        if t >= self.total {
+            return;
+        }
+        let old = std::mem::take(&mut self.lines);
+        let loop_start = self.loop_start;
+        *self = Scenario::new();
+        self.loop_start = loop_start;
+        let mut at = 0;
+        for (c, n) in old {
+            if t >= at && t < at + n {
+                let before = t - at;
+                self.push_unmerged(c.clone(), before);
+                self.push_unmerged(changes.clone(), 1);
+                self.push_unmerged(c, n - before - 1);
+            } else {
+                self.push_unmerged(c, n);
+            }
+            at += n;
+        }
+    }
+
+    /// Append without merging into the previous line (keeps an edited tick its own line).
+    fn push_unmerged(&mut self, changes: Vec<(usize, i64)>, repeat: usize) {
+        if repeat == 0 {
+            return;
+        }
+        self.starts.push(self.total);
+        self.total += repeat;
+        self.lines.push((changes, repeat));
+    }
 }
 
 /// A problem in a scenario file.
@@ -45,7 +166,7 @@ pub const MAX_TICKS: usize = 100_000_000;
 
 /// Parse a scenario for a program. Collects every error rather than stopping at the first.
 pub fn parse(text: &str, program: &Program) -> Result<Scenario, Vec<ScenarioError>> {
-    let mut ticks = Vec::new();
+    let mut ticks = Scenario::new();
     let mut errors = Vec::new();
     let mut loop_start: Option<usize> = None;
     for (ln, raw) in text.lines().enumerate() {
@@ -224,9 +345,7 @@ pub fn parse(text: &str, program: &Program) -> Result<Scenario, Vec<ScenarioErro
             ));
             break;
         }
-        for _ in 0..repeat {
-            ticks.push(changes.clone());
-        }
+        ticks.push_repeated(changes, repeat);
     }
     if errors.is_empty() {
         if loop_start.is_some_and(|k| k == 0 || k >= ticks.len()) {
@@ -241,7 +360,8 @@ pub fn parse(text: &str, program: &Program) -> Result<Scenario, Vec<ScenarioErro
                 hint: Some("tick 0 only initialises, so a loop starts at tick 1 or later".into()),
             }]);
         }
-        Ok(Scenario { ticks, loop_start })
+        ticks.loop_start = loop_start;
+        Ok(ticks)
     } else {
         Err(errors)
     }
@@ -341,11 +461,20 @@ const HEADER: &str =
 pub fn format(s: &Scenario, program: &Program) -> String {
     let mut w = ScenarioWriter::new(program);
     let mut out = w.header().to_string();
-    for (i, tick) in s.ticks.iter().enumerate() {
-        if s.loop_start == Some(i) {
+    let mut at = 0;
+    for (changes, n) in &s.lines {
+        let mut n = *n;
+        // A fold never crosses the loop's start: split the line there.
+        if let Some(k) = s.loop_start.filter(|&k| k > at && k < at + n) {
+            out.push_str(&w.push_repeated(changes, k - at));
+            n -= k - at;
+            at = k;
+        }
+        if s.loop_start == Some(at) {
             out.push_str(&w.mark_loop());
         }
-        out.push_str(&w.push_changes(tick));
+        out.push_str(&w.push_repeated(changes, n));
+        at += n;
     }
     out.push_str(&w.finish());
     out
@@ -385,6 +514,19 @@ impl<'p> ScenarioWriter<'p> {
     pub fn push_vector(&mut self, vector: &[i64]) -> String {
         let changes = changes(self.program, &mut self.held, vector);
         self.push_changes(&changes)
+    }
+
+    /// `n` ticks with the same changes, written as one `* N` line (reading it back gives the
+    /// same scenario).
+    pub fn push_repeated(&mut self, tick: &[(usize, i64)], n: usize) -> String {
+        if n == 0 {
+            return String::new();
+        }
+        let done = self.push_changes(tick);
+        if let Some((_, count, _)) = &mut self.pending {
+            *count += (n - 1) as u64;
+        }
+        done
     }
 
     /// The next tick, as its changes (input index, value).
@@ -467,27 +609,26 @@ pub fn from_input_vectors(program: &Program, vectors: &[Vec<i64>]) -> Scenario {
         .iter()
         .map(|i| program.slots[i.slot as usize].init)
         .collect();
-    let ticks = vectors
-        .iter()
-        .map(|vec| changes(program, &mut held, vec))
-        .collect();
-    Scenario {
-        ticks,
-        loop_start: None,
+    let mut s = Scenario::new();
+    for vec in vectors {
+        s.push(changes(program, &mut held, vec));
     }
+    s
 }
 
 /// A lasso scenario: like [`from_input_vectors`], with a `loop:` before tick `loop_start`
 /// whose first tick writes every held input, so that repeating the loop repeats its inputs.
 pub fn from_lasso(program: &Program, vectors: &[Vec<i64>], loop_start: usize) -> Scenario {
     let mut s = from_input_vectors(program, vectors);
-    if let (Some(tick), Some(vec)) = (s.ticks.get_mut(loop_start), vectors.get(loop_start)) {
-        tick.clear();
-        for (k, inp) in program.inputs.iter().enumerate() {
-            if !inp.is_event || vec[k] != 0 {
-                tick.push((k, vec[k]));
-            }
-        }
+    if let Some(vec) = vectors.get(loop_start) {
+        let tick = program
+            .inputs
+            .iter()
+            .enumerate()
+            .filter(|(k, inp)| !inp.is_event || vec[*k] != 0)
+            .map(|(k, _)| (k, vec[k]))
+            .collect();
+        s.set_tick(loop_start, tick);
     }
     s.loop_start = Some(loop_start);
     s

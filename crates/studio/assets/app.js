@@ -386,14 +386,14 @@ function render() {
   renderSignals();
 }
 
-function fmtTime(ms) { return ms >= 1000 ? `${(ms / 1000).toFixed(2)} s` : `${ms} ms`; }
+// Times come from the server (`time_text`, exact seconds computed by the IR's one helper).
 
 function renderStatus() {
   const run = studio.run;
   if (!run) return;
   const m = studio.model;
   const t = run.ticks;
-  let s = `<b>${t}</b> tick${t === 1 ? '' : 's'}` + (m.tick_ms ? ` · ${fmtTime(t * m.tick_ms)}` : '');
+  let s = `<b>${t}</b> tick${t === 1 ? '' : 's'}` + (run.time_text ? ` · ${run.time_text} s` : '');
   if (studio.cursor < studio.records.length - 1) s += ` · viewing tick ${studio.cursor}`;
   if (run.future) s += ` · ${run.future} to redo`;
   if (run.stop) s += ` · <span class="stop">${escapeHtml(run.stop.message)}</span>`;
@@ -415,7 +415,7 @@ function renderStatus() {
 
 function renderVars(rec) {
   const tb = $('#vars tbody');
-  $('#cursor-tick').textContent = studio.cursor >= 0 ? studio.cursor : '–';
+  $('#cursor-tick').textContent = studio.cursor >= 0 ? studio.cursor + (rec && rec.time_text ? ` (${rec.time_text} s)` : '') : '–';
   if (!rec) { tb.innerHTML = ''; return; }
   const prev = studio.records[rec.tick - 1];
   const rows = [];
@@ -464,7 +464,8 @@ function showVerdict(v) {
     list.appendChild(row);
   }
   row.className = 'res' + (v.scenario ? ' replay' : '');
-  const what = v.scenario ? `${v.verdict === 'reachable' ? 'witness' : 'counterexample'}: ${v.depth} ticks — click to replay` : (v.reason || v.note || '');
+  const at = v.time_text ? `, decided at tick ${v.tick} (${v.time_text} s)` : '';
+  const what = v.scenario ? `${v.verdict === 'reachable' ? 'witness' : 'counterexample'}: ${v.depth} ticks${at} — click to replay` : (v.reason || v.note || '');
   row.innerHTML = `<span>${escapeHtml(v.name)}</span><span class="v ${v.verdict}">${v.verdict}</span>` +
     `<span class="sub">${escapeHtml(v.kind)} · ${escapeHtml(v.engine || '')}${what ? ' · ' + escapeHtml(what) : ''}</span>`;
   row.onclick = v.scenario ? () => {

@@ -29,7 +29,7 @@ const Wave = (() => {
     for (let t = 0; t <= n; t += nice) {
       const x = LABEL_W + t * px;
       g.beginPath(); g.moveTo(x, AXIS_H - 4); g.lineTo(x, H); g.stroke();
-      const ms = model.tick_ms ? ` (${fmtTime(t * model.tick_ms)})` : '';
+      const ms = records[t] && records[t].time_text ? ` (${records[t].time_text} s)` : '';
       g.fillText(`${t}${ms}`, x + 2, 13);
     }
     let y = AXIS_H;
@@ -120,8 +120,6 @@ const Wave = (() => {
     }
     return {px, tickAt: x => Math.floor((x - LABEL_W) / px)};
   }
-
-  function fmtTime(ms) { return ms >= 1000 ? `${(ms / 1000).toFixed(ms % 1000 ? 2 : 0)} s` : `${ms} ms`; }
 
   // Messages between instances: present events from their sender to their receivers, and
   // changes of connected variables; "environment" sends the free inputs.

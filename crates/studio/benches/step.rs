@@ -42,6 +42,7 @@ fn main() {
         bind: "127.0.0.1".parse().expect("address"),
         port: 0,
         token: Some("bench".into()),
+        lib: Vec::new(),
     })
     .expect("server");
     let addr = h.addr;

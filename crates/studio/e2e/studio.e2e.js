@@ -329,6 +329,23 @@ async function fam5(browser) {
   return ms;
 }
 
+// Time in the user's units: tests/time/station.sc (by hand in its comments) has ticks of
+// 1.25 s and violates `never_at_end` in tick 95, at 118.75 s; the run has 96 ticks (120.00 s).
+// The page shows the server's times: in the status, the message and the cursor's heading.
+async function timeUnits(browser) {
+  const model = 'tests/time/station.sc';
+  const url = await serve(model);
+  const page = await browser.newPage({viewport: {width: 1200, height: 800}});
+  await open(page, url);
+  await page.setInputFiles('#load', path.join(ROOT, 'tests/time/station.scn'));
+  await waitTicks(page, 96);
+  const status = await page.textContent('#status');
+  assert.ok(status.includes('120.00 s'), status);
+  assert.ok(status.includes('violated at tick 95 (118.75 s)'), status);
+  assert.strictEqual(await page.textContent('#cursor-tick'), '95 (118.75 s)');
+  await page.close();
+}
+
 async function linearDrive(browser) {
   const model = 'examples/linear_drive/linear_drive.sc';
   const url = await serve(model);
@@ -354,7 +371,7 @@ async function linearDrive(browser) {
   const browser = await chromium.launch({executablePath: CHROMIUM, args: ['--no-sandbox', '--disable-gpu']});
   let failed = false;
   const only = process.env.STUDIO_E2E_ONLY;
-  for (const [name, t] of [['fam closed loop', famClosedLoop], ['counterexample', counterexample], ['verify in the page', verifyInPage], ['lasso', lassoInPage], ['fam_system5', fam5], ['linear drive', linearDrive]]) {
+  for (const [name, t] of [['fam closed loop', famClosedLoop], ['counterexample', counterexample], ['verify in the page', verifyInPage], ['lasso', lassoInPage], ['fam_system5', fam5], ['time units', timeUnits], ['linear drive', linearDrive]]) {
     if (only && !name.includes(only)) continue;
     try { await t(browser); console.log(`ok   ${name}`); } catch (e) { failed = true; console.log(`FAIL ${name}: ${e.stack || e}`); }
   }

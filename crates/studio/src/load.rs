@@ -6,14 +6,18 @@
 use serde::Serialize;
 use statecheck_base::{Diagnostic, LineIndex};
 use statecheck_ir::Program;
+use statecheck_model::imports::{FileText, Resolver, Sources};
 use statecheck_model::Model;
+use std::collections::BTreeMap;
+use std::path::{Path, PathBuf};
 use std::sync::Arc;
 
 /// A model that checked and lowered: what every session runs.
 pub struct Loaded {
     /// The path as given.
     pub path: String,
-    /// Its text (for transition labels and error positions).
+    /// Its text and the text of every file it imports, one after the other: the model's
+    /// spans are offsets into it (for transition labels and error positions).
     pub source: String,
     /// The checked model.
     pub model: Model,
@@ -47,20 +51,74 @@ pub struct PageDiagnostic {
 }
 
 /// Read, parse, check and lower `path` (system `system`, or the only one); the diagnostics
-/// on failure.
+/// on failure. Imports are looked up relative to the importing file only.
 pub fn load(path: &str, system: Option<&str>) -> Result<Arc<Loaded>, Vec<PageDiagnostic>> {
-    let source = std::fs::read_to_string(path)
-        .map_err(|e| vec![plain(path, format!("cannot read `{path}`: {e}"))])?;
-    load_source(path, source, system)
+    load_with(path, system, &[])
 }
 
-/// [`load`] on text already read.
-pub fn load_source(
+/// [`load`] with a library search path: imports not found beside the importing file are
+/// looked up in each of `lib`, in order (the CLI passes `--lib` and `STATECHECK_PATH`).
+pub fn load_with(
     path: &str,
-    source: String,
+    system: Option<&str>,
+    lib: &[PathBuf],
+) -> Result<Arc<Loaded>, Vec<PageDiagnostic>> {
+    let source = std::fs::read_to_string(path)
+        .map_err(|e| vec![plain(path, format!("cannot read `{path}`: {e}"))])?;
+    let key = std::fs::canonicalize(path)
+        .map_or_else(|_| path.to_string(), |p| p.to_string_lossy().into_owned());
+    let mut resolver = FsResolver {
+        dirs: lib.to_vec(),
+        names: [(key.clone(), PathBuf::from(path))].into_iter().collect(),
+    };
+    let root = FileText {
+        key,
+        name: path.to_string(),
+        text: source,
+    };
+    let program = statecheck_model::imports::load(root, &mut resolver);
+    load_program(path, program, system)
+}
+
+/// Resolves imports on the file system, as the CLI does: relative to the importing file,
+/// then in each library directory. Keys are canonical paths.
+struct FsResolver {
+    dirs: Vec<PathBuf>,
+    /// The path each key was found at, to resolve its own imports relative to it.
+    names: BTreeMap<String, PathBuf>,
+}
+
+impl Resolver for FsResolver {
+    fn resolve(&mut self, from: &str, path: &str) -> Result<FileText, String> {
+        let from_name = self.names.get(from).cloned().unwrap_or_else(|| from.into());
+        let here = from_name.parent().unwrap_or(Path::new("")).join(path);
+        let mut tried = Vec::new();
+        for p in std::iter::once(here).chain(self.dirs.iter().map(|d| d.join(path))) {
+            if let Ok(text) = std::fs::read_to_string(&p) {
+                let key = std::fs::canonicalize(&p)
+                    .unwrap_or_else(|_| p.clone())
+                    .to_string_lossy()
+                    .into_owned();
+                self.names.entry(key.clone()).or_insert(p.clone());
+                return Ok(FileText {
+                    key,
+                    name: p.to_string_lossy().into_owned(),
+                    text,
+                });
+            }
+            tried.push(format!("`{}`", p.display()));
+        }
+        Err(format!("looked for {}", tried.join(", ")))
+    }
+}
+
+/// Check and lower a program whose imports are resolved.
+fn load_program(
+    path: &str,
+    program: statecheck_model::imports::Program,
     system: Option<&str>,
 ) -> Result<Arc<Loaded>, Vec<PageDiagnostic>> {
-    let (file, mut diags) = statecheck_syntax::parse(&source);
+    let (file, sources, mut diags) = (program.file, program.sources, program.diags);
     let (model, more) = if diags.iter().any(Diagnostic::is_error) {
         // As the CLI: check what parsed, keep only errors that are not recovery artefacts.
         let (m, more) = statecheck_model::check(&file);
@@ -77,14 +135,14 @@ pub fn load_source(
     diags.sort_by_key(|d| (d.span.start, d.span.end));
     if diags.iter().any(Diagnostic::is_error) {
         let errors: Vec<Diagnostic> = diags.into_iter().filter(Diagnostic::is_error).collect();
-        return Err(to_page(path, &source, &errors));
+        return Err(to_page(path, &sources, &errors));
     }
     let sys = choose(&model, system).map_err(|m| vec![plain(path, m)])?;
-    let program = statecheck_ir::lower(&model, sys).map_err(|d| to_page(path, &source, &d))?;
+    let program = statecheck_ir::lower(&model, sys).map_err(|d| to_page(path, &sources, &d))?;
     let views = statecheck_ir::view::TraceView::new(&model, &program);
     let mut loaded = Loaded {
         path: path.to_string(),
-        source,
+        source: sources.text.clone(),
         model,
         program,
         views,
@@ -150,20 +208,28 @@ fn plain(path: &str, message: String) -> PageDiagnostic {
     }
 }
 
-fn to_page(path: &str, source: &str, diags: &[Diagnostic]) -> Vec<PageDiagnostic> {
-    let idx = LineIndex::new(source);
+/// Diagnostics for the page, each in the file (of the program's files) that contains it.
+fn to_page(path: &str, sources: &Sources, diags: &[Diagnostic]) -> Vec<PageDiagnostic> {
     diags
         .iter()
         .map(|d| {
-            let (line, col) = idx.line_col(d.span.start);
+            let (file, text, at) = match sources.locate(d.span.start as usize) {
+                Some((f, at)) => (f.name.clone(), sources.file_text(f), at),
+                None => (
+                    path.to_string(),
+                    sources.text.as_str(),
+                    d.span.start as usize,
+                ),
+            };
+            let (line, col) = LineIndex::new(text).line_col(at as u32);
             PageDiagnostic {
                 severity: format!("{:?}", d.severity).to_lowercase(),
                 code: d.code.to_string(),
                 message: d.message.clone(),
-                file: path.to_string(),
+                file,
                 line,
                 col,
-                text: source
+                text: text
                     .lines()
                     .nth(line.saturating_sub(1))
                     .unwrap_or("")

@@ -196,6 +196,7 @@ pub fn state(s: &Session, id: Option<u64>, truncate: Option<u64>, ticks: &[TickO
         "ticks": records,
         "run": {
             "ticks": s.ticks(),
+            "time_text": p.time_text(s.ticks()),
             "future": s.future_len(),
             "stop": s.stop().map(|st| stop(p, st, &loaded.source, &loaded.path)),
             "coverage": s.coverage(),
@@ -212,11 +213,16 @@ pub fn state(s: &Session, id: Option<u64>, truncate: Option<u64>, ticks: &[TickO
     })
 }
 
-/// One tick as `statecheck sim --json` prints it (`tick`, `active`, `vars`, `events`), plus
-/// `fired` (coverage items counted in the tick), `active_ids` (state ids per instance) and
-/// `stop` when the run ended there.
+/// One tick as `statecheck sim --json` prints it (`tick`, `time` when the model declares a
+/// tick, `active`, `vars`, `events`), plus `time_text` (the time as the CLI's table writes
+/// it), `fired` (coverage items counted in the tick), `active_ids` (state ids per instance)
+/// and `stop` when the run ended there.
 pub fn record(p: &Program, views: &Views, t: &TickOut, source: &str, path: &str) -> Value {
     let mut r = json!({"tick": t.tick, "fired": t.fired});
+    if let (Some(time), Some(text)) = (p.seconds(t.tick), p.time_text(t.tick)) {
+        r["time"] = json!(time);
+        r["time_text"] = json!(text);
+    }
     if let Some(slots) = &t.slots {
         let mut active = Map::new();
         let mut ids = Vec::new();
@@ -242,15 +248,24 @@ pub fn record(p: &Program, views: &Views, t: &TickOut, source: &str, path: &str)
     r
 }
 
-/// How a run stopped, with the message `statecheck sim` prints.
+/// How a run stopped, with the message `statecheck sim` prints (and `time`, in seconds, beside
+/// `tick` when the model declares a tick).
 pub fn stop(p: &Program, st: &Stop, source: &str, path: &str) -> Value {
+    let mut v = stop_fields(p, st, source, path);
+    if let Some(t) = v["tick"].as_u64().and_then(|t| p.seconds(t)) {
+        v["time"] = json!(t);
+    }
+    v
+}
+
+fn stop_fields(p: &Program, st: &Stop, source: &str, path: &str) -> Value {
     match st {
         Stop::Completed => json!({"status": "completed", "message": "run completed"}),
         Stop::Violation { tick, property } => json!({
             "status": "violated",
             "tick": tick,
             "property": property,
-            "message": format!("property `{property}` violated at tick {tick}"),
+            "message": format!("property `{property}` violated at {}", p.tick_label(*tick)),
         }),
         Stop::RuntimeError { tick, error } => {
             let idx = LineIndex::new(source);
@@ -261,8 +276,8 @@ pub fn stop(p: &Program, st: &Stop, source: &str, path: &str) -> Value {
             json!({
                 "status": "runtime_error",
                 "tick": tick,
-                "property": error.kind.builtin_property(),
-                "message": format!("run-time error at tick {tick}: {}{}", p.describe_error(error), at.unwrap_or_default()),
+                    "property": error.kind.builtin_property(),
+                "message": format!("run-time error at {}: {}{}", p.tick_label(*tick), p.describe_error(error), at.unwrap_or_default()),
             })
         }
         Stop::AssumeViolated { tick, assume } => json!({

@@ -436,6 +436,8 @@ pub struct Config {
     pub port: u16,
     /// The access token; random when `None`.
     pub token: Option<String>,
+    /// Library directories for imports, searched after the importing file's directory.
+    pub lib: Vec<std::path::PathBuf>,
 }
 
 /// A running server.
@@ -563,7 +565,8 @@ pub fn spawn(config: Config) -> Result<Handle, Error> {
         own
     };
     let url = format!("http://{shown}/?token={token}");
-    let first = load::load(&config.path, config.system.as_deref()).map_err(Arc::new);
+    let first =
+        load::load_with(&config.path, config.system.as_deref(), &config.lib).map_err(Arc::new);
     let (tx, rx) = watch::channel::<Current>(first);
     let app = Arc::new(App {
         token: token.clone(),
@@ -590,9 +593,11 @@ pub fn spawn(config: Config) -> Result<Handle, Error> {
                         if now != last {
                             last = now;
                             let (p, s) = (cfg.path.clone(), cfg.system.clone());
-                            let next =
-                                tokio::task::spawn_blocking(move || load::load(&p, s.as_deref()))
-                                    .await;
+                            let lib = cfg.lib.clone();
+                            let next = tokio::task::spawn_blocking(move || {
+                                load::load_with(&p, s.as_deref(), &lib)
+                            })
+                            .await;
                             if let Ok(next) = next {
                                 if tx.send(next.map_err(Arc::new)).is_err() {
                                     break;

@@ -415,23 +415,23 @@ impl Session {
                 .collect();
             err(ErrorKind::BadScenario, msgs.join("; "))
         })?;
-        if sc.ticks.len() > HISTORY_CAP {
+        if sc.len() > HISTORY_CAP {
             return Err(err(
                 ErrorKind::BadScenario,
                 format!(
                     "the scenario has {} ticks; a session keeps at most {HISTORY_CAP}",
-                    sc.ticks.len()
+                    sc.len()
                 ),
             ));
         }
         // The input vectors exactly as `ScenarioInputs` builds them.
-        let mut vectors = Vec::with_capacity(sc.ticks.len());
+        let mut vectors = Vec::with_capacity(sc.len());
         let mut inputs: Vec<i64> = p
             .inputs
             .iter()
             .map(|i| p.slots[i.slot as usize].init)
             .collect();
-        for changes in &sc.ticks {
+        for changes in sc.ticks() {
             for (k, inp) in p.inputs.iter().enumerate() {
                 if inp.is_event {
                     inputs[k] = 0;
@@ -478,11 +478,11 @@ impl Session {
             };
             self.lasso = Some(Lasso {
                 start: k,
-                end: sc.ticks.len(),
+                end: sc.len(),
                 violated,
                 broken: l.broken,
                 fair: l.fair,
-                following: self.stop.is_none() && self.history.len() == sc.ticks.len(),
+                following: self.stop.is_none() && self.history.len() == sc.len(),
             });
         }
         Ok(out)

@@ -1,6 +1,7 @@
 //! "Verify" from the page: the properties decided by the portfolio of `crates/verify` (the
 //! library behind `statecheck verify`), each verdict sent to the page the moment it is
-//! decided, with its counterexample or witness as a scenario the page can replay.
+//! decided, with its counterexample or witness as a scenario the page can replay (minimised
+//! as the CLI minimises it: `statecheck_sim::minimise`).
 
 use crate::load::Loaded;
 use serde_json::{json, Value};
@@ -33,7 +34,12 @@ pub fn engine(name: Option<&str>) -> Result<Engine, String> {
 /// One result as the page shows it.
 pub fn result(l: &Loaded, index: usize, r: &PropResult, meta: &Meta) -> Value {
     let p = &l.program;
-    let scenario_text = r.counterexample.as_ref().map(|vectors| {
+    let scenario_text = r.counterexample.as_ref().map(|raw| {
+        // Minimised as `statecheck verify` minimises it (by default), so that the page replays
+        // the trace the CLI writes: inputs that do not matter kept at their previous value.
+        let minimised = statecheck_sim::minimise::Target::of(r)
+            .and_then(|t| statecheck_sim::minimise::minimise(p, raw, &t));
+        let vectors = minimised.as_ref().unwrap_or(raw);
         let sc = match r.loop_start {
             Some(k) => scenario::from_lasso(p, vectors, k as usize),
             None => scenario::from_input_vectors(p, vectors),
@@ -52,8 +58,12 @@ pub fn result(l: &Loaded, index: usize, r: &PropResult, meta: &Meta) -> Value {
             scenario::format(&sc, p)
         )
     });
+    // The tick that decides the property (the last of the counterexample or witness).
+    let tick = r.counterexample.as_ref().map(|_| r.depth.saturating_sub(1));
     json!({
         "type": "verdict",
+        "tick": tick,
+        "time_text": tick.and_then(|t| p.time_text(t)),
         "index": index,
         "name": r.name,
         "kind": r.kind.as_str(),

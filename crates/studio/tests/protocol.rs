@@ -374,3 +374,98 @@ async fn the_page_reloads_and_shows_diagnostics() {
     h.stop();
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn times_come_with_the_ticks_when_the_model_declares_a_tick() {
+    // tests/time/station.sc (hand-derived there): ticks of 1.25 s; `start` in tick 1 and a
+    // timer of 94 ticks end the stroke in tick 95, at 95 × 1.25 s = 118.75 s, where the
+    // invariant `never_at_end` is violated. The run then has 96 ticks: 120.00 s.
+    let h = start(&repo("tests/time/station.sc"));
+    let (mut ws, hello) = connect(&h).await;
+    assert_eq!(hello["type"], "model", "{hello}");
+    let scn = std::fs::read_to_string(repo("tests/time/station.scn")).expect("scenario");
+    let l = call(&mut ws, json!({"op": "load_scenario", "text": scn})).await;
+    let stop = &l["run"]["stop"];
+    assert_eq!(stop["tick"], 95, "{l}");
+    assert_eq!(stop["time"], json!(118.75));
+    assert_eq!(
+        stop["message"],
+        "property `never_at_end` violated at tick 95 (118.75 s)"
+    );
+    assert_eq!(l["run"]["time_text"], "120.00");
+    let ticks = l["ticks"].as_array().expect("ticks");
+    assert_eq!(ticks.len(), 96);
+    assert_eq!(
+        (&ticks[1]["time"], &ticks[1]["time_text"]),
+        (&json!(1.25), &json!("1.25"))
+    );
+    assert_eq!(
+        (&ticks[95]["time"], &ticks[95]["time_text"]),
+        (&json!(118.75), &json!("118.75"))
+    );
+    // Verify from the page: the counterexample is decided at tick 95, 118.75 s.
+    let started = call(&mut ws, json!({"op": "verify", "engine": "explicit"})).await;
+    assert_eq!(started["type"], "verify_started", "{started}");
+    let done = loop {
+        let m = next(&mut ws).await;
+        if m["type"] == "verify_done" {
+            break m;
+        }
+    };
+    let r = done["results"]
+        .as_array()
+        .expect("results")
+        .iter()
+        .find(|r| r["name"] == "never_at_end")
+        .cloned()
+        .expect("never_at_end");
+    assert_eq!(r["verdict"], "violated");
+    assert_eq!(
+        (&r["tick"], &r["time_text"]),
+        (&json!(95), &json!("118.75"))
+    );
+    h.stop();
+}
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn verify_from_the_page_minimises_the_counterexample() {
+    // By hand: tick 0 enters A (no `during`), so `go` must hold in ticks 1, 2 and 3 for n to
+    // reach 3 and violate `small` at tick 3; `go` in tick 0 and `x` (read by nothing) never
+    // matter. Minimised (as `statecheck verify` does), the scenario keeps every input at its
+    // initial value except `go` from tick 1 on: `-`, `C.go = true`, `- * 2`. (The explicit
+    // engine's raw trace sets `x`, a choice among equals; the page must not show it.)
+    let dir = std::env::temp_dir().join(format!("studio-minimise-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).expect("dir");
+    let model = dir.join("noise.sc");
+    std::fs::write(
+        &model,
+        "chart C {\n  input go: bool = false;\n  input x: int[0..3] = 2;\n  output n: int[0..9] = 0;\n  initial A;\n  state A { during { if go { n = min(9, n + 1); } } }\n  invariant small: n < 3;\n}\n",
+    )
+    .expect("write");
+    let h = start(model.to_str().expect("path"));
+    let (mut ws, hello) = connect(&h).await;
+    assert_eq!(hello["type"], "model", "{hello}");
+    let started = call(&mut ws, json!({"op": "verify", "engine": "explicit"})).await;
+    assert_eq!(started["type"], "verify_started", "{started}");
+    let done = loop {
+        let m = next(&mut ws).await;
+        if m["type"] == "verify_done" {
+            break m;
+        }
+    };
+    let r = done["results"]
+        .as_array()
+        .expect("results")
+        .iter()
+        .find(|r| r["name"] == "small")
+        .cloned()
+        .expect("small");
+    assert_eq!(
+        (&r["verdict"], &r["depth"]),
+        (&json!("violated"), &json!(4))
+    );
+    let text = r["scenario"].as_str().expect("scenario");
+    let lines: Vec<&str> = text.lines().filter(|l| !l.starts_with('#')).collect();
+    assert_eq!(lines, ["-", "C.go = true", "- * 2"], "{text}");
+    h.stop();
+}

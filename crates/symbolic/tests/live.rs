@@ -80,10 +80,6 @@ fn liveness_engines_match_hand_derived_verdicts() {
                     (true, Method::L2s(Engine::Kind)) => {
                         assert!(matches!(v, Verdict::Proved | Verdict::Unknown), "{what}")
                     }
-                    // k-liveness does not handle compassion.
-                    (true, Method::KLive) if *system == "Compassion" => {
-                        assert_eq!(v, Verdict::Unknown, "{what}")
-                    }
                     (true, _) => assert_eq!(v, Verdict::Proved, "{what}"),
                     (false, Method::KLive) => assert_eq!(v, Verdict::Unknown, "{what}"),
                     (false, _) => {

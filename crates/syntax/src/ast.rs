@@ -43,6 +43,26 @@ pub enum Item {
     Import(ImportDecl),
     /// `interface Name { input x: T; output event e; … }` (`docs/components.md`).
     Interface(InterfaceDecl),
+    /// `component Name [implements I] { ports; instances; connections; … }`: a composite
+    /// component, flattened into its instances before checking (`docs/components.md`).
+    Component(Component),
+}
+
+/// `component Name [implements I, …] { port; … instance …; connect …; order …; … }`: a
+/// composite component with a declared interface (its ports) built from instances.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Component {
+    /// The component's name.
+    pub name: Ident,
+    /// The interfaces it declares it implements.
+    pub implements: Vec<Ident>,
+    /// Its ports: `input`/`output` variables and events (no initial values).
+    pub ports: Vec<VarDecl>,
+    /// Its contents, as a system body: instances, connections, `order`, assumptions, rates
+    /// and properties (`body.name` is the component's name).
+    pub body: System,
+    /// The whole declaration.
+    pub span: Span,
 }
 
 /// `interface Name { member; … }`: the ports a chart that implements it must declare.
@@ -280,6 +300,102 @@ pub struct StateBody {
     pub junctions: Vec<Junction>,
     /// Outgoing transitions of this state, in textual order.
     pub transitions: Vec<Transition>,
+    /// Continuous-variable elements (`continuous`, `grid`, `sensor` at chart level, `der` in
+    /// states; `docs/hybrid.md`), in textual order. The checker discretizes them away.
+    pub hybrid: Vec<HybridElem>,
+}
+
+/// An element of a hybrid plant (`docs/hybrid.md`).
+#[derive(Clone, Debug, PartialEq)]
+pub enum HybridElem {
+    /// `continuous NAME: [lo .. hi] [= init];`
+    Continuous {
+        /// The variable.
+        name: Ident,
+        /// Lower end of the range.
+        lo: Expr,
+        /// Upper end of the range.
+        hi: Expr,
+        /// Initial value (the lower end when absent).
+        init: Option<Expr>,
+        /// The whole element.
+        span: Span,
+    },
+    /// `grid NAME N;` or `grid NAME coarse;`
+    Grid {
+        /// The variable.
+        var: Ident,
+        /// The number of equal cells; `None` for `coarse`.
+        cells: Option<Expr>,
+        /// The whole element.
+        span: Span,
+    },
+    /// `sensor OUT = VAR in [lo .. hi];`
+    Sensor {
+        /// The boolean variable kept equal to the range predicate.
+        output: Ident,
+        /// The continuous variable.
+        var: Ident,
+        /// Lower bound of the range.
+        lo: Expr,
+        /// Upper bound of the range.
+        hi: Expr,
+        /// The whole element.
+        span: Span,
+    },
+    /// `der(VAR) = rate;` in a state.
+    Der {
+        /// The continuous variable.
+        var: Ident,
+        /// Its speed while the state is active.
+        rate: SpeedExpr,
+        /// The whole element.
+        span: Span,
+    },
+}
+
+impl HybridElem {
+    /// The span of the whole element.
+    pub fn span(&self) -> Span {
+        match self {
+            HybridElem::Continuous { span, .. }
+            | HybridElem::Grid { span, .. }
+            | HybridElem::Sensor { span, .. }
+            | HybridElem::Der { span, .. } => *span,
+        }
+    }
+}
+
+/// The right-hand side of `der(x) = …`.
+#[derive(Clone, Debug, PartialEq)]
+pub enum SpeedExpr {
+    /// A constant speed.
+    Constant(Speed),
+    /// `profile(r1 for d1, …, r)`: each speed for its duration from the state's entry, then
+    /// the last speed.
+    Profile(Vec<(Speed, Duration)>, Speed),
+}
+
+/// A speed: `[-] number [/ number]`, in units per second.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Speed {
+    /// A leading `-`.
+    pub negative: bool,
+    /// The numerator.
+    pub num: SpeedNumber,
+    /// The denominator after `/`.
+    pub den: Option<SpeedNumber>,
+    /// The whole speed.
+    pub span: Span,
+}
+
+/// A number in a speed.
+#[derive(Clone, Debug, PartialEq)]
+pub enum SpeedNumber {
+    /// A decimal literal as written (`0.8`, `2`).
+    Decimal(String, Span),
+    /// An integer constant or chart parameter (after parameter expansion, a literal).
+    Expr(Expr),
 }
 
 /// `initial NAME [/ { actions }];`
@@ -737,14 +853,14 @@ pub enum PropertyKind {
         /// Some reachable state satisfies it.
         expr: Expr,
     },
-    /// `respond NAME: trigger => response within N;`
+    /// `respond NAME: trigger => response within N;` (or `within 2 s` with a declared tick)
     Respond {
         /// When this holds ...
         trigger: Expr,
         /// ... this must hold within `within` ticks (0 = the same tick).
         response: Expr,
-        /// The bound in ticks.
-        within: Expr,
+        /// The bound: a constant tick count, or a duration converted with the file's `tick`.
+        within: Delay,
     },
     /// `respond NAME: trigger => response;` (no bound: the response must come eventually).
     RespondEventually {

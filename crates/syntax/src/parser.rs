@@ -35,6 +35,7 @@
 mod body;
 mod components;
 mod expr;
+mod hybrid;
 mod imports;
 mod items;
 mod rate;

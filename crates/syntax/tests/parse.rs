@@ -51,6 +51,7 @@ fn item_spans_cover_their_text() {
                 Item::Import(i) => i.span,
                 Item::Chart(c) => c.span,
                 Item::Interface(i) => i.span,
+                Item::Component(c) => c.span,
                 Item::System(s) => s.span,
             };
             &src[span.range()]

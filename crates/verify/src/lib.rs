@@ -172,11 +172,23 @@ pub fn verify(
     // the one SAT engine asked for (`temporal.rs`).
     let (temporal, _) = statecheck_explicit::ltl::split(program, &opts.check.properties);
     let temporal = !program.temporal.is_empty() || !temporal.is_empty();
+    let started = std::time::Instant::now();
     if opts.engine == Engine::Auto {
         if let Some(run) = portfolio::quick_explicit(program, opts, events) {
             return Ok(run);
         }
     }
+    // The quick pass's time counts against `--timeout`.
+    let rest;
+    let opts = match opts.check.timeout {
+        Some(t) if opts.engine == Engine::Auto => {
+            let mut o = opts.clone();
+            o.check.timeout = Some(t.saturating_sub(started.elapsed()));
+            rest = o;
+            &rest
+        }
+        _ => opts,
+    };
     let mut run = match (opts.engine, opts.engine.symbolic()) {
         (Engine::Explicit, _) => single::run_explicit(program, opts, events),
         _ if temporal => temporal::run(program, opts, events),

@@ -1,4 +1,5 @@
-//! CSV traces: one row per tick, one column per instance's active leaf states and per variable.
+//! CSV traces: one row per tick, one column per instance's active leaf states and per variable;
+//! a `time` column (seconds) after `tick` when the model declares its tick length.
 
 use statecheck_ir::view::TraceView as Views;
 use statecheck_ir::Program;
@@ -12,8 +13,11 @@ fn quote(s: &str) -> String {
 }
 
 /// The header row.
-pub fn header(views: &Views) -> String {
+pub fn header(p: &Program, views: &Views) -> String {
     let mut header = vec!["tick".to_string()];
+    if p.tick_ms.is_some() {
+        header.push("time".into());
+    }
     header.extend(views.instances.iter().map(|i| format!("{}.active", i.name)));
     header.extend(views.vars.iter().map(|v| v.name.clone()));
     header.push("events".into());
@@ -29,6 +33,7 @@ pub fn header(views: &Views) -> String {
 /// The row of one tick.
 pub fn row(p: &Program, views: &Views, tick: u64, slots: &[i64]) -> String {
     let mut row = vec![tick.to_string()];
+    row.extend(p.time_text(tick));
     row.extend((0..views.instances.len()).map(|i| views.active(p, i, slots, true).join("|")));
     row.extend(
         views

@@ -1,4 +1,5 @@
-//! The JSON trace (a contract): `{"ticks":[{"tick","active","vars","events"}], ...}`.
+//! The JSON trace (a contract): `{"ticks":[{"tick","active","vars","events"}], ...}`, and
+//! `"time"` (seconds, a number) after `"tick"` when the model declares its tick length.
 
 use serde_json::{json, Map, Value};
 use statecheck_ir::view::TraceView as Views;
@@ -13,7 +14,8 @@ pub fn value(kind: &ValueKind, v: i64) -> Value {
     }
 }
 
-/// One tick, given by its number and slots, as a JSON object.
+/// One tick, given by its number and slots, as a JSON object (with `"time"` in seconds when
+/// the model declares `tick`).
 pub fn tick_of(p: &Program, views: &Views, tick: u64, slots: &[i64]) -> Value {
     let mut active = Map::new();
     for (i, inst) in views.instances.iter().enumerate() {
@@ -23,5 +25,13 @@ pub fn tick_of(p: &Program, views: &Views, tick: u64, slots: &[i64]) -> Value {
     for v in &views.vars {
         vars.insert(v.name.clone(), value(&v.display, slots[v.slot as usize]));
     }
-    json!({"tick": tick, "active": active, "vars": vars, "events": views.present_events(slots)})
+    let mut o = Map::new();
+    o.insert("tick".into(), json!(tick));
+    if let Some(t) = p.seconds(tick) {
+        o.insert("time".into(), json!(t));
+    }
+    o.insert("active".into(), Value::Object(active));
+    o.insert("vars".into(), Value::Object(vars));
+    o.insert("events".into(), json!(views.present_events(slots)));
+    Value::Object(o)
 }

@@ -62,29 +62,6 @@ pub fn show(views: &mut Views, patterns: &[String]) -> anyhow::Result<()> {
 /// One row: tick, time (empty without a declared tick length), active states, changes.
 type Row = (String, String, String, String);
 
-/// The time at the end of `tick` with ticks of `ms` milliseconds, in seconds with as many
-/// decimals as the tick length needs (`3.1` for tick 31 of 100 ms; `62.5` for 250 ms).
-pub fn time(tick: u64, ms: i64) -> String {
-    let total = i128::from(tick) * i128::from(ms);
-    let decimals = if ms % 1000 == 0 {
-        0
-    } else if ms % 100 == 0 {
-        1
-    } else if ms % 10 == 0 {
-        2
-    } else {
-        3
-    };
-    let whole = total / 1000;
-    let frac = (total % 1000).abs();
-    match decimals {
-        0 => whole.to_string(),
-        1 => format!("{whole}.{}", frac / 100),
-        2 => format!("{whole}.{:02}", frac / 10),
-        _ => format!("{whole}.{frac:03}"),
-    }
-}
-
 /// Ticks a streamed table holds back to size its columns: a trace of up to this many ticks
 /// looks exactly as [`render`] draws it; longer ones keep the widths of these first rows.
 pub const SIZING_ROWS: usize = 1000;
@@ -159,7 +136,7 @@ impl<'a> Stream<'a> {
             Some(pv) => pv.copy_from_slice(slots),
             None => self.prev = Some(slots.to_vec()),
         }
-        let time = views.tick_ms.map(|ms| time(tick, ms)).unwrap_or_default();
+        let time = p.time_text(tick).unwrap_or_default();
         let row = (tick.to_string(), time, active.join("; "), changes.join(" "));
         if self.widths.is_none() {
             self.held.push(row);
@@ -184,7 +161,7 @@ impl<'a> Stream<'a> {
     fn flush(&mut self) -> String {
         let rows = std::mem::take(&mut self.held);
         let w0 = rows.iter().map(|r| r.0.len()).max().unwrap_or(0).max(4);
-        let wt = if self.views.tick_ms.is_some() {
+        let wt = if self.p.tick_ms.is_some() {
             rows.iter().map(|r| r.1.len()).max().unwrap_or(0).max(8)
         } else {
             0
@@ -346,14 +323,5 @@ tick  active  changes
    1  B       go! alpha_value=1 beta_value=2 gamma_value=3 delta_value=4
 ";
         assert_eq!(table(None), flat);
-    }
-
-    #[test]
-    fn time_is_printed_with_the_decimals_the_tick_needs() {
-        assert_eq!(time(31, 100), "3.1");
-        assert_eq!(time(250, 250), "62.50");
-        assert_eq!(time(3, 1000), "3");
-        assert_eq!(time(7, 5), "0.035");
-        assert_eq!(time(0, 100), "0.0");
     }
 }

@@ -29,9 +29,10 @@ fn vcd_name(s: &str) -> String {
         .collect()
 }
 
-/// Render a trace as VCD; one tick lasts `tick_ms` milliseconds (1 if the model declares none).
-pub fn render(p: &Program, views: &Views, trace: &[TickRecord], tick_ms: i64) -> String {
-    let (mut s, mut out) = Stream::new(p, views, tick_ms);
+/// Render a trace as VCD: with a declared tick, in a time scale that matches it
+/// ([`statecheck_ir::time::vcd_timescale`]); without one, one tick is one unit of `1ms`.
+pub fn render(p: &Program, views: &Views, trace: &[TickRecord]) -> String {
+    let (mut s, mut out) = Stream::new(p, views);
     for rec in trace {
         out.push_str(&s.tick(rec.tick, &rec.slots));
     }
@@ -51,22 +52,44 @@ pub struct Stream<'a> {
     sigs: Vec<(String, Sig)>,
     last: Vec<Option<i64>>,
     last_tick: Option<u64>,
-    tick_ms: i64,
+    /// Time units of the `$timescale` per tick.
+    units: i64,
 }
 
 impl<'a> Stream<'a> {
     /// The stream and the file's header (the signal definitions).
-    pub fn new(p: &'a Program, views: &Views, tick_ms: i64) -> (Self, String) {
+    pub fn new(p: &'a Program, views: &Views) -> (Self, String) {
         let mut sigs: Vec<(String, Sig)> = Vec::new();
         let mut out = String::new();
+        let (units, scale) = match p.tick_ms {
+            Some(ms) => {
+                let (unit_ms, text) = statecheck_ir::time::vcd_timescale(ms);
+                (ms / unit_ms, text)
+            }
+            None => (1, "1ms"),
+        };
         let _ = writeln!(
             out,
-            "$date statecheck trace $end\n$version statecheck {} $end\n$timescale 1ms $end",
+            "$date statecheck trace $end\n$version statecheck {} $end\n$timescale {scale} $end",
             env!("CARGO_PKG_VERSION")
         );
+        // An instance of a composite component (`storage.feeder.cyl`) sits in one scope per
+        // component instance on its path, shared by its siblings.
+        let mut parents: Vec<&str> = Vec::new();
         for (i, inst) in views.instances.iter().enumerate() {
             let inst = &inst.name;
-            let _ = writeln!(out, "$scope module {} $end", vcd_name(inst));
+            let path: Vec<&str> = inst.split('.').collect();
+            let (up, leaf) = path.split_at(path.len() - 1);
+            let common = parents.iter().zip(up).take_while(|(a, b)| a == b).count();
+            while parents.len() > common {
+                parents.pop();
+                let _ = writeln!(out, "$upscope $end");
+            }
+            for p in &up[common..] {
+                let _ = writeln!(out, "$scope module {} $end", vcd_name(p));
+                parents.push(p);
+            }
+            let _ = writeln!(out, "$scope module {} $end", vcd_name(leaf[0]));
             let prefix = format!("{inst}.");
             for v in views.vars.iter().filter(|v| v.name.starts_with(&prefix)) {
                 let id = ident(sigs.len());
@@ -123,6 +146,9 @@ impl<'a> Stream<'a> {
             }
             let _ = writeln!(out, "$upscope $end\n$upscope $end");
         }
+        for _ in parents {
+            let _ = writeln!(out, "$upscope $end");
+        }
         let _ = writeln!(out, "$enddefinitions $end");
         let last = vec![None; sigs.len()];
         (
@@ -131,7 +157,7 @@ impl<'a> Stream<'a> {
                 sigs,
                 last,
                 last_tick: None,
-                tick_ms,
+                units,
             },
             out,
         )
@@ -160,13 +186,13 @@ impl<'a> Stream<'a> {
         if changes.is_empty() && tick != 0 {
             return changes;
         }
-        format!("#{}\n{changes}", tick as i64 * self.tick_ms)
+        format!("#{}\n{changes}", tick as i64 * self.units)
     }
 
     /// The end of the last tick (call once after it).
     pub fn finish(&mut self) -> String {
         self.last_tick
-            .map(|t| format!("#{}\n", (t as i64 + 1) * self.tick_ms))
+            .map(|t| format!("#{}\n", (t as i64 + 1) * self.units))
             .unwrap_or_default()
     }
 }

@@ -41,23 +41,6 @@ pub struct Write {
     pub minimise: bool,
 }
 
-/// What the minimised trace of a result must still show, or `None` for the traces that are
-/// not minimised: lassos, CTL and nonblocking paths (the simulator does not evaluate them)
-/// and deadlocks.
-fn target(r: &PropResult) -> Option<Target> {
-    if r.loop_start.is_some() {
-        return None;
-    }
-    let name = r.name.clone();
-    match r.kind {
-        PropKind::Ctl | PropKind::Nonblocking => None,
-        PropKind::Reachable => Some(Target::Reached(name)),
-        PropKind::Builtin if r.name == "deadlock_free" => None,
-        PropKind::Builtin => Some(Target::RuntimeError(name)),
-        _ => Some(Target::Violation(name)),
-    }
-}
-
 /// Write and replay the counterexample of one result, if it has one (the directory exists).
 pub fn one(
     loaded: &Loaded,
@@ -72,7 +55,7 @@ pub fn one(
         let Some(raw) = &r.counterexample else {
             return Ok(None);
         };
-        let minimised = match target(r) {
+        let minimised = match Target::of(r) {
             Some(t) if write.minimise => minimise(program, raw, &t),
             _ => None,
         };
@@ -106,16 +89,18 @@ pub fn one(
                     .and_then(|(_, t)| *t);
                 (at != Some(tick)).then(|| {
                     format!(
-                        "the simulator ended with {} before seeing `{}` at tick {tick}",
-                        describe(&run.stop),
-                        r.name
+                        "the simulator ended with {} before seeing `{}` at {}",
+                        describe(program, &run.stop),
+                        r.name,
+                        program.tick_label(tick)
                     )
                 })
             }
             (Stop::Violation { tick: t, property }, _) => (!(*property == r.name && *t == tick))
                 .then(|| {
                     format!(
-                        "the simulator stops earlier: property `{property}` violated at tick {t}"
+                        "the simulator stops earlier: property `{property}` violated at {}",
+                        program.tick_label(*t)
                     )
                 }),
             (Stop::RuntimeError { tick: t, error }, PropKind::Builtin)
@@ -125,7 +110,7 @@ pub fn one(
             }
             (stop, _) => Some(format!(
                 "the simulator ended with {} instead",
-                describe(stop)
+                describe(program, stop)
             )),
         };
         let path = match dir {
@@ -136,12 +121,7 @@ pub fn one(
                 crate::outpath::write(std::path::Path::new(&file), text.as_bytes())?;
                 if vcd {
                     let vfile = format!("{d}/{}.vcd", file_name(&r.name));
-                    let text = output::vcd::render(
-                        program,
-                        &views,
-                        &run.trace,
-                        loaded.model.tick_ms.unwrap_or(1),
-                    );
+                    let text = output::vcd::render(program, &views, &run.trace);
                     crate::outpath::write(std::path::Path::new(&vfile), text.as_bytes())?;
                 }
                 Some(file)
@@ -157,17 +137,20 @@ pub fn one(
     }
 }
 
-fn describe(stop: &Stop) -> String {
+fn describe(p: &Program, stop: &Stop) -> String {
     match stop {
         Stop::Completed => "the scenario completed".into(),
         Stop::RuntimeError { tick, error } => format!(
-            "a run-time error ({}) at tick {tick}",
-            error.kind.builtin_property()
+            "a run-time error ({}) at {}",
+            error.kind.builtin_property(),
+            p.tick_label(*tick)
         ),
         Stop::Violation { tick, property } => {
-            format!("property `{property}` violated at tick {tick}")
+            format!("property `{property}` violated at {}", p.tick_label(*tick))
         }
-        Stop::AssumeViolated { tick, .. } => format!("an `assume` violated at tick {tick}"),
+        Stop::AssumeViolated { tick, .. } => {
+            format!("an `assume` violated at {}", p.tick_label(*tick))
+        }
     }
 }
 

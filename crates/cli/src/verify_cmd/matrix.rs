@@ -12,8 +12,19 @@ struct Row {
     config: String,
     seconds: f64,
     states: u64,
-    /// (property, verdict, depth) in report order.
-    cells: Vec<(String, &'static str, u64)>,
+    /// Per property in report order.
+    cells: Vec<Cell>,
+}
+
+/// One property's verdict in one configuration.
+struct Cell {
+    property: String,
+    verdict: &'static str,
+    depth: u64,
+    /// When the model declares a tick: the deciding tick of a counterexample or witness and
+    /// its time in seconds (as `statecheck_ir::time` writes it). Models without a tick keep
+    /// the matrix they had.
+    tick: Option<(u64, String)>,
 }
 
 /// Verify `base` in each configuration with `opts`; print the matrix; the exit code is the
@@ -51,7 +62,15 @@ pub fn run(
             states: run.report.stats.states,
             cells: results
                 .iter()
-                .map(|r| (r.name.clone(), r.verdict.as_str(), r.depth))
+                .map(|r| Cell {
+                    property: r.name.clone(),
+                    verdict: r.verdict.as_str(),
+                    depth: r.depth,
+                    tick: r.counterexample.as_ref().and_then(|_| {
+                        let t = r.depth.saturating_sub(1);
+                        program.time_text(t).map(|time| (t, time))
+                    }),
+                })
                 .collect(),
         });
     }
@@ -62,7 +81,7 @@ pub fn run(
         for r in &rows {
             if r.cells
                 .iter()
-                .any(|c| matches!(c.1, "violated" | "unreachable"))
+                .any(|c| matches!(c.verdict, "violated" | "unreachable"))
             {
                 t.push_str(&format!(
                     "configuration `{}` fails: its counterexamples with `statecheck verify {} --system {base} --config {}`\n",
@@ -85,9 +104,9 @@ pub fn run(
 fn table(rows: &[Row]) -> String {
     let mut props: Vec<&str> = Vec::new();
     for r in rows {
-        for (p, _, _) in &r.cells {
-            if !props.contains(&p.as_str()) {
-                props.push(p);
+        for c in &r.cells {
+            if !props.contains(&c.property.as_str()) {
+                props.push(&c.property);
             }
         }
     }
@@ -99,11 +118,15 @@ fn table(rows: &[Row]) -> String {
     for r in rows {
         let mut line = vec![r.config.clone()];
         for p in &props {
+            // With a declared tick, a counterexample's or witness's time follows its verdict.
             let cell = r
                 .cells
                 .iter()
-                .find(|c| c.0 == *p)
-                .map_or("-".to_string(), |c| c.1.to_string());
+                .find(|c| c.property == *p)
+                .map_or("-".to_string(), |c| match &c.tick {
+                    Some((_, time)) => format!("{} ({time} s)", c.verdict),
+                    None => c.verdict.to_string(),
+                });
             line.push(cell);
         }
         line.push(r.states.to_string());
@@ -140,7 +163,16 @@ fn to_json(base: &str, rows: &[Row]) -> serde_json::Value {
             let results: Vec<serde_json::Value> = r
                 .cells
                 .iter()
-                .map(|(p, v, d)| serde_json::json!({"property": p, "verdict": v, "depth": d}))
+                .map(|c| {
+                    let mut o = serde_json::json!({"property": c.property, "verdict": c.verdict, "depth": c.depth});
+                    if let Some((tick, time)) = &c.tick {
+                        o["tick"] = serde_json::json!(tick);
+                        if let Ok(t) = time.parse::<f64>() {
+                            o["time"] = serde_json::json!(t);
+                        }
+                    }
+                    o
+                })
                 .collect();
             serde_json::json!({
                 "configuration": r.config,

@@ -88,6 +88,9 @@ pub fn result_json(
     }
     if let Some(c) = c {
         o["tick"] = json!(c.tick);
+        if let Some(t) = p.seconds(c.tick) {
+            o["time"] = json!(t);
+        }
         if let Some(m) = &c.mismatch {
             o["replay_note"] = json!(m);
         }
@@ -293,11 +296,11 @@ pub fn tail(
                 };
                 let _ = writeln!(
                     out,
-                    "\n{what} for `{}`{config} ({}, {} ticks, decided at tick {}){at}",
+                    "\n{what} for `{}`{config} ({}, {} ticks, decided at {}){at}",
                     r.name,
                     r.kind.as_str(),
                     r.depth,
-                    c.tick
+                    p.tick_label(c.tick)
                 );
                 out.push_str(&table::render(p, &views, &c.trace, width));
                 if let Some(e) = &r.error {

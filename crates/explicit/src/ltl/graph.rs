@@ -129,11 +129,26 @@ impl Kripke {
 
 /// Build the graph of `program`, with the letters of `atoms` (at most 64).
 pub fn build(program: &Program, atoms: &[ExprId], limits: GraphLimits) -> Result<Kripke, Stopped> {
+    match build_partial(program, atoms, limits) {
+        (g, None) => Ok(g),
+        (_, Some(why)) => Err(why),
+    }
+}
+
+/// [`build`], keeping what was built when a limit stops it: the states expanded so far have
+/// all their edges, the others (found but not expanded) none. Every path and cycle of such a
+/// graph is one of the system, so a lasso found in it is a real counterexample (early
+/// accepting-cycle detection); an absence proves nothing. The reason is `Some` when stopped.
+pub fn build_partial(
+    program: &Program,
+    atoms: &[ExprId],
+    limits: GraphLimits,
+) -> (Kripke, Option<Stopped>) {
     let start = Instant::now();
     let mut space = InputSpace::new(program);
     space.solve_static(program);
     if space.per_tick() > u128::from(u32::MAX) {
-        return Err(Stopped::Branching);
+        return (Kripke::default(), Some(Stopped::Branching));
     }
     let packer = Packer::new(program);
     let words = packer.words.max(1);
@@ -179,7 +194,12 @@ pub fn build(program: &Program, atoms: &[ExprId], limits: GraphLimits) -> Result
                 None
             };
             if let Some(why) = stop {
-                return Err(why);
+                // The unexpanded states keep no edges.
+                while g.edge_start.len() <= g.states.len() / words {
+                    g.edge_start.push(g.edges.len() as u32);
+                }
+                g.time = start.elapsed();
+                return (g, Some(why));
             }
         }
         packer.unpack_words(g.packed(s), &mut state);
@@ -248,7 +268,7 @@ pub fn build(program: &Program, atoms: &[ExprId], limits: GraphLimits) -> Result
         s += 1;
     }
     g.time = start.elapsed();
-    Ok(g)
+    (g, None)
 }
 
 /// The input vector at position `idx` of the enumeration.

@@ -144,19 +144,25 @@ pub fn check(
             stats,
         );
     }
+    // With a time limit, the graph gets three quarters of it: if it is not completed, the
+    // rest goes to looking for lassos in what was built (`early_lassos`).
     let limits = graph::GraphLimits {
         max_states: opts.max_states,
         max_memory: opts.max_memory,
-        deadline: opts.timeout.map(|t| start + t),
+        deadline: opts.timeout.map(|t| start + t.mul_f64(0.75)),
     };
-    let g = match graph::build(program, &atoms, limits) {
-        Ok(g) => g,
-        Err(why) => {
+    let g = match graph::build_partial(program, &atoms, limits) {
+        (g, None) => g,
+        (g, Some(why)) => {
             let why = format!("the state graph was not completed: {why:?} limit");
+            let early = early_lassos(program, &g, &props, &automata, &fair);
             return (
                 props
                     .iter()
-                    .map(|p| unknown(&p.name, p.written, why.clone()))
+                    .zip(early)
+                    .map(|(p, found)| {
+                        found.unwrap_or_else(|| unknown(&p.name, p.written, why.clone()))
+                    })
                     .collect(),
                 stats,
             );
@@ -184,21 +190,7 @@ pub fn check(
                         note: None,
                         loop_start: None,
                     },
-                    Ok(Some(l)) => PropResult {
-                        name: p.name.clone(),
-                        kind: kind(p.written),
-                        verdict: Verdict::Violated,
-                        depth: l.inputs.len() as u64,
-                        counterexample: Some(
-                            l.inputs
-                                .iter()
-                                .map(|&i| graph::input_vector(program, i))
-                                .collect(),
-                        ),
-                        error: None,
-                        note: None,
-                        loop_start: Some(l.loop_start as u64),
-                    },
+                    Ok(Some(l)) => violated(program, &p.name, p.written, &l),
                     Err(product::TooLarge) => unknown(
                         &p.name,
                         p.written,
@@ -220,6 +212,62 @@ pub fn check(
         results.push(deadlock_result(program, &g));
     }
     (results, stats)
+}
+
+/// The result of a property violated by lasso `l`.
+fn violated(program: &Program, name: &str, w: Written, l: &product::Lasso) -> PropResult {
+    PropResult {
+        name: name.to_string(),
+        kind: kind(w),
+        verdict: Verdict::Violated,
+        depth: l.inputs.len() as u64,
+        counterexample: Some(
+            l.inputs
+                .iter()
+                .map(|&i| graph::input_vector(program, i))
+                .collect(),
+        ),
+        error: None,
+        note: None,
+        loop_start: Some(l.loop_start as u64),
+    }
+}
+
+/// Product states per position of a partial graph at most, in [`early_lassos`]: the search
+/// stays proportional to the graph built.
+const EARLY_PRODUCT_PER_NODE: u64 = 4;
+
+/// Lassos in a graph whose construction a limit stopped (`graph::build_partial`): every cycle
+/// in it is one of the system, so a fair accepting one found is a counterexample — a
+/// violation reported although the graph is incomplete (early accepting-cycle detection).
+/// `None` per property where none is found (or the property is CTL).
+fn early_lassos(
+    program: &Program,
+    g: &graph::Kripke,
+    props: &[&statecheck_ir::temporal::TemporalProperty],
+    automata: &[Option<Result<buchi::Buchi, buchi::TranslateError>>],
+    fair: &product::FairBits,
+) -> Vec<Option<PropResult>> {
+    let bound = (g.n_nodes() as u64)
+        .saturating_mul(EARLY_PRODUCT_PER_NODE)
+        .min(MAX_PRODUCT);
+    props
+        .iter()
+        .zip(automata)
+        .map(|(p, aut)| match aut {
+            Some(Ok(a)) if g.n_states() > 0 => match product::find_lasso(g, a, fair, bound) {
+                Ok(Some(l)) => {
+                    let mut r = violated(program, &p.name, p.written, &l);
+                    r.note = Some(
+                        "found before the state graph was complete (the lasso is real)".into(),
+                    );
+                    Some(r)
+                }
+                _ => None,
+            },
+            _ => None,
+        })
+        .collect()
 }
 
 /// `deadlock_free`: violated by the first deadlock found (breadth-first: a shortest

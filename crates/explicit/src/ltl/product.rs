@@ -40,6 +40,28 @@ pub fn find_lasso(
     fair: &FairBits,
     max_states: u64,
 ) -> Result<Option<Lasso>, TooLarge> {
+    find_lasso_counted(g, a, fair, max_states).0
+}
+
+/// [`find_lasso`], with the number of product states built (for benchmarks).
+pub fn find_lasso_counted(
+    g: &Kripke,
+    a: &Buchi,
+    fair: &FairBits,
+    max_states: u64,
+) -> (Result<Option<Lasso>, TooLarge>, u64) {
+    let mut built = 0u64;
+    let r = product_lasso(g, a, fair, max_states, &mut built);
+    (r, built)
+}
+
+fn product_lasso(
+    g: &Kripke,
+    a: &Buchi,
+    fair: &FairBits,
+    max_states: u64,
+    built: &mut u64,
+) -> Result<Option<Lasso>, TooLarge> {
     // Product states (node, automaton state), numbered in BFS order.
     let mut pairs: Vec<(u32, u32)> = Vec::new();
     let mut parent: Vec<(u32, u32)> = Vec::new(); // (parent product state or MAX, input)
@@ -61,6 +83,7 @@ pub fn find_lasso(
     let mut i = 0usize;
     while i < pairs.len() {
         if pairs.len() as u64 > max_states {
+            *built = pairs.len() as u64;
             return Err(TooLarge);
         }
         let (n, q) = pairs[i];
@@ -84,6 +107,7 @@ pub fn find_lasso(
         i += 1;
     }
     let n = pairs.len();
+    *built = n as u64;
     let succ = |v: u32| -> &[u32] {
         &targets[edge_start[v as usize] as usize..edge_start[v as usize + 1] as usize]
     };

@@ -236,6 +236,7 @@ impl<'m> Lowerer<'m> {
             fairness,
             started,
             n_locals: self.locals.len(),
+            tick_ms: self.model.tick_ms,
             run_cache: Default::default(),
         }
     }

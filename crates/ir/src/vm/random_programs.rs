@@ -394,6 +394,7 @@ fn random_program(seed: u64) -> Program {
         fairness: Vec::new(),
         started: 0,
         n_locals: g.n_locals as usize,
+        tick_ms: None,
         run_cache: Default::default(),
     }
 }

@@ -1,4 +1,4 @@
-//! Transitions: triggers, guards, `after` durations, destinations (relative names, choice
+//! Transitions: triggers, guards, `after` delays, destinations (relative names, choice
 //! branches) and their actions.
 
 use super::check_block;
@@ -77,10 +77,7 @@ pub(super) fn check_transition(
             }
         },
         Some(ast::Trigger::After { delay, span }) => {
-            let n = match delay {
-                ast::Delay::Ticks(e) => ck.const_value(scope, e),
-                ast::Delay::Time(d) => duration_ticks(ck, scope, d),
-            };
+            let n = crate::duration::delay_ticks(ck, scope, delay);
             match n {
                 Some(n) if n >= 1 => Trigger::After(n),
                 Some(n) => {
@@ -134,39 +131,6 @@ pub(super) fn check_transition(
         priority,
         span: t.span,
     }
-}
-
-pub(super) fn duration_ticks(
-    ck: &mut ExprChecker,
-    scope: &Scope,
-    d: &ast::Duration,
-) -> Option<i64> {
-    let amount = ck.const_value(scope, &d.amount)?;
-    let ms = match d.unit {
-        ast::TimeUnit::Ms => amount,
-        ast::TimeUnit::S => amount.checked_mul(1000)?,
-        ast::TimeUnit::Min => amount.checked_mul(60_000)?,
-    };
-    let Some(tick) = ck.globals.tick_ms else {
-        ck.sink.push(
-            Diagnostic::error("E0120", "a delay in time units needs a tick length", d.span)
-                .with_label("how many ticks is this?")
-                .with_hint("declare the tick length at the top of the file, e.g. `tick 100 ms;`"),
-        );
-        return None;
-    };
-    if ms % tick != 0 {
-        ck.sink.push(
-            Diagnostic::error(
-                "E0120",
-                format!("{ms} ms is not a whole number of {tick} ms ticks"),
-                d.span,
-            )
-            .with_hint("choose a delay that is a multiple of the tick length"),
-        );
-        return None;
-    }
-    Some(ms / tick)
 }
 
 /// Resolve a target relative to `source`: the nearest enclosing scope that declares the first

@@ -32,6 +32,7 @@ pub fn start_system(model: &str, system: Option<&str>) -> Handle {
         bind: "127.0.0.1".parse().expect("address"),
         port: 0,
         token: Some(TOKEN.into()),
+        lib: Vec::new(),
     })
     .expect("server starts")
 }

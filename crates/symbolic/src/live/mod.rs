@@ -112,11 +112,17 @@ pub enum LiveOutcome {
 pub fn check_justice(j: &Justice, method: Method, limits: &Limits) -> LiveOutcome {
     match method {
         Method::KLive => {
-            if !j.compassion.is_empty() {
-                return LiveOutcome::Unknown(
-                    "k-liveness does not handle compassion (`fair p => q`)".into(),
-                );
-            }
+            // Compassion pairs become justice signals (an exact reduction, [`Justice::without_compassion`]).
+            let owned;
+            let j = if j.compassion.is_empty() {
+                j
+            } else {
+                owned = j.without_compassion();
+                &owned
+            };
+            // k doubles: a proof for some k is a proof for every larger one, and a counter
+            // reached at k only says that k was too small, so a run whose acceptance fires
+            // 100 times costs 8 IC3 calls instead of 101.
             let mut k = 0;
             loop {
                 if let Some(why) = limits.expired() {
@@ -128,7 +134,7 @@ pub fn check_justice(j: &Justice, method: Method, limits: &Limits) -> LiveOutcom
                 let aig = klive(j, k);
                 match Engine::Ic3.run(&aig, limits) {
                     Outcome::Proved(_) => return LiveOutcome::Proved,
-                    Outcome::Reached(_) => k += 1,
+                    Outcome::Reached(_) => k = (2 * k).max(1),
                     Outcome::Bounded(d) => return LiveOutcome::Bounded(d),
                     Outcome::Unknown(why) => return LiveOutcome::Unknown(why),
                 }
@@ -156,6 +162,37 @@ pub fn check_justice(j: &Justice, method: Method, limits: &Limits) -> LiveOutcom
 }
 
 impl Justice {
+    /// The same problem with every compassion pair `(p, q)` replaced by a justice signal:
+    /// a sticky latch `quiet`, set by a fresh input at any frame, from which on `p` may not
+    /// hold (a constraint), and the justice signal `quiet || q`. A run is fair for the pair
+    /// (`p` finitely often, or `q` infinitely often) exactly when some choice of the frame
+    /// that sets `quiet` (after the last `p`, or never) makes `quiet || q` hold infinitely
+    /// often; so the fair runs are those of the original, and the extra input only picks
+    /// that frame.
+    pub fn without_compassion(&self) -> Justice {
+        let mut g = self.aig.clone();
+        let mut justice = self.justice.clone();
+        justice.retain(|&l| l != crate::aig::Lit::TRUE);
+        for (k, &(p, q)) in self.compassion.iter().enumerate() {
+            let go = g.input(Some(format!("compassion_quiet_now[{k}]")));
+            let quiet = g.latch(Some(false), Some(format!("compassion_quiet[{k}]")));
+            let now = g.or(quiet, go);
+            let li = g.nodes[quiet.var() as usize].latch_index();
+            g.set_next(li, now);
+            let ok = g.or(!now, !p);
+            g.constraints.push(ok);
+            justice.push(g.or(now, q));
+        }
+        if justice.is_empty() {
+            justice.push(crate::aig::Lit::TRUE);
+        }
+        Justice {
+            aig: g,
+            justice,
+            compassion: Vec::new(),
+        }
+    }
+
     /// Justice property `k` of an AIGER circuit, with the file's fairness constraints as
     /// further justice signals (AIGER 1.9: a run violates it when all of them hold
     /// infinitely often).

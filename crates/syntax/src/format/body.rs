@@ -24,6 +24,8 @@ pub(super) enum Member<'t> {
     Region(&'t Region),
     Junction(&'t Junction),
     Transition(&'t Transition),
+    /// A hybrid element (`docs/hybrid.md`), printed as written with its spaces normalised.
+    Hybrid(Span),
 }
 
 impl Printer<'_> {
@@ -59,6 +61,7 @@ impl Printer<'_> {
             Member::Region(r) => r.span.start,
             Member::Junction(j) => j.span.start,
             Member::Transition(t) => t.span.start,
+            Member::Hybrid(s) => s.start,
         }
     }
 
@@ -93,6 +96,7 @@ impl Printer<'_> {
         }
         ms.extend(body.junctions.iter().map(Member::Junction));
         ms.extend(body.transitions.iter().map(Member::Transition));
+        ms.extend(body.hybrid.iter().map(|h| Member::Hybrid(h.span())));
         // A stable sort: equal starts cannot happen in a parsed file, but stay deterministic.
         let mut keyed: Vec<(u32, Member<'t>)> =
             ms.into_iter().map(|m| (self.member_start(&m), m)).collect();
@@ -161,8 +165,40 @@ impl Printer<'_> {
                     self.branches(j.name.span.end, &j.branches, j.span.end, "", j.span.end);
                 }
                 Member::Transition(t) => self.transition(t),
+                Member::Hybrid(span) => {
+                    let t = self.hybrid_text(*span);
+                    self.line(*span, &t);
+                }
             }
         }
+    }
+
+    /// A hybrid element's source text on one line: runs of white space become one space, and
+    /// none is left inside brackets and parentheses or before `,` and `;`.
+    fn hybrid_text(&self, span: Span) -> String {
+        let mut out = String::new();
+        let mut prev: Option<crate::lexer::Token> = None;
+        for tok in self
+            .toks
+            .iter()
+            .filter(|t| t.span.start >= span.start && t.span.end <= span.end)
+        {
+            if let Some(p) = prev {
+                let close = matches!(
+                    tok.kind,
+                    Tok::Semi | Tok::Comma | Tok::RParen | Tok::RBracket | Tok::Colon
+                );
+                let open = matches!(p.kind, Tok::LParen | Tok::LBracket);
+                let sep = matches!(p.kind, Tok::Comma | Tok::Colon);
+                let adjacent = p.span.end == tok.span.start;
+                if !close && !open && (sep || !adjacent) {
+                    out.push(' ');
+                }
+            }
+            out.push_str(self.text(tok.span));
+            prev = Some(*tok);
+        }
+        out
     }
 
     fn state(&mut self, s: &State, start: u32) {

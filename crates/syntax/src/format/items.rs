@@ -23,7 +23,7 @@ impl Printer<'_> {
         let mut prev_big = false;
         for (i, item) in file.items.iter().enumerate() {
             let big = match item {
-                Item::Chart(_) | Item::System(_) => true,
+                Item::Chart(_) | Item::System(_) | Item::Component(_) => true,
                 Item::Fn(f) => !f.lets.is_empty(),
                 _ => false,
             };
@@ -101,6 +101,7 @@ impl Printer<'_> {
             }
             Item::Chart(c) => self.chart(c),
             Item::System(s) => self.system(s),
+            Item::Component(c) => self.component(c),
             Item::Interface(i) => {
                 self.comments_before(i.name.span.end);
                 self.start_line(i.span.start);
@@ -238,7 +239,27 @@ impl Printer<'_> {
     }
 
     fn system(&mut self, s: &System) {
+        let head = format!("system {}", s.name.name);
+        self.system_like(s, &head, &[]);
+    }
+
+    /// `component NAME [implements I, …] { ports; members }`.
+    fn component(&mut self, c: &crate::ast::Component) {
+        let mut head = format!("component {}", c.name.name);
+        if !c.implements.is_empty() {
+            let names: Vec<&str> = c.implements.iter().map(|i| i.name.as_str()).collect();
+            head.push_str(&format!(" implements {}", names.join(", ")));
+        }
+        self.system_like(&c.body, &head, &c.ports);
+    }
+
+    /// A system or component body (`ports` only for a component), members in textual order.
+    fn system_like(&mut self, s: &System, head: &str, ports: &[VarDecl]) {
         let mut ms: Vec<(u32, SysMember<'_>)> = Vec::new();
+        for p in ports {
+            let t = self.var_decl(p);
+            ms.push((p.span.start, SysMember::Line(p.span, t)));
+        }
         for i in &s.instances {
             let count = i
                 .count
@@ -286,7 +307,7 @@ impl Printer<'_> {
         ms.sort_by_key(|(k, _)| *k);
         self.comments_before(s.name.span.start);
         self.start_line(s.span.start);
-        self.out.push_str(&format!("system {} {{", s.name.name));
+        self.out.push_str(&format!("{head} {{"));
         let brace = self.lbrace_after(s.name.span.end);
         self.open(brace);
         for (_, m) in &ms {
@@ -377,7 +398,7 @@ impl Printer<'_> {
                 "respond {n}: {} => {} within {};",
                 self.expr(trigger),
                 self.expr(response),
-                self.expr(within)
+                self.delay(within)
             ),
             PropertyKind::RespondEventually { trigger, response } => format!(
                 "respond {n}: {} => {};",

@@ -93,7 +93,12 @@ impl Parser<'_> {
             }
             let start = self.pos;
             let t = self.peek();
-            if is_body_kw(t) {
+            if self.at_hybrid_elem() {
+                match self.hybrid_elem() {
+                    Ok(h) => body.hybrid.push(h),
+                    Err(_) => self.recover(),
+                }
+            } else if is_body_kw(t) {
                 if self.body_elem(&mut body).is_err() {
                     self.recover();
                 }

@@ -2,7 +2,7 @@
 //! system's `configuration`s with their slot bindings (docs/components.md).
 
 use super::{is_item_kw, Failed, PResult, Parser};
-use crate::ast::{Arg, Binding, ChartParam, Configuration, InterfaceDecl};
+use crate::ast::{Arg, Binding, ChartParam, Component, Configuration, InterfaceDecl, System};
 use crate::lexer::{Kw, Tok};
 
 impl Parser<'_> {
@@ -142,9 +142,15 @@ impl Parser<'_> {
         })
     }
 
-    /// `IDENT '=' IDENT [ '(' args ')' ] ';'`
+    /// `IDENT { '.' IDENT } '=' IDENT [ '(' args ')' ] ';'`: a dotted path names an instance
+    /// inside a component instance (kept as one name, `storage.feeder.home`).
     pub(super) fn binding(&mut self) -> PResult<Binding> {
-        let instance = self.expect_ident("an instance name")?;
+        let mut instance = self.expect_ident("an instance name")?;
+        while self.eat(Tok::Dot).is_some() {
+            let next = self.expect_ident("an instance name after `.`")?;
+            instance.name = format!("{}.{}", instance.name, next.name);
+            instance.span = instance.span.to(next.span);
+        }
         self.expect(Tok::Assign, "after the instance name")?;
         let chart = self.expect_ident("a chart name after `=`")?;
         let args = if self.at(Tok::LParen) {
@@ -158,6 +164,55 @@ impl Parser<'_> {
             instance,
             chart,
             args,
+        })
+    }
+
+    /// At `component NAME {` or `component NAME implements`: `component` is a contextual
+    /// keyword, so it stays usable as a name elsewhere.
+    pub(super) fn at_component(&self) -> bool {
+        self.text(self.tok().span) == "component"
+            && self.nth(1).kind == Tok::Ident
+            && (self.nth(2).kind == Tok::LBrace
+                || (self.nth(2).kind == Tok::Ident && self.text(self.nth(2).span) == "implements"))
+    }
+
+    /// `'component' IDENT [ 'implements' IDENT { ',' IDENT } ] '{' { port | sys_elem } '}'`
+    pub(super) fn component(&mut self) -> PResult<Component> {
+        let start = self.bump().span;
+        let name = self.expect_ident("a component name after `component`")?;
+        let mut implements = Vec::new();
+        if self.at(Tok::Ident) && self.text(self.tok().span) == "implements" {
+            self.bump();
+            implements.push(self.expect_ident("an interface name after `implements`")?);
+            while self.eat(Tok::Comma).is_some() {
+                implements.push(self.expect_ident("an interface name after `,`")?);
+            }
+        }
+        let open = self.expect(Tok::LBrace, "after the component name")?;
+        let what = format!("component `{}`", name.name);
+        let mut body = System {
+            name: name.clone(),
+            instances: Vec::new(),
+            connections: Vec::new(),
+            order: Vec::new(),
+            assumes: Vec::new(),
+            rates: Vec::new(),
+            properties: Vec::new(),
+            observers: Vec::new(),
+            requirements: Vec::new(),
+            configurations: Vec::new(),
+            span: start,
+        };
+        let mut ports = Vec::new();
+        self.system_elems(&mut body, open, &what, Some(&mut ports));
+        let span = self.span_from(start);
+        body.span = span;
+        Ok(Component {
+            name,
+            implements,
+            ports,
+            body,
+            span,
         })
     }
 }

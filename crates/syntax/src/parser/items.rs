@@ -36,6 +36,10 @@ impl Parser<'_> {
                         Err(Failed) => self.recover(),
                     }
                 }
+                Tok::Ident if self.at_component() => match self.component() {
+                    Ok(item) => items.push(crate::ast::Item::Component(item)),
+                    Err(Failed) => self.recover(),
+                },
                 Tok::RBrace => {
                     let d = Diagnostic::error("E0010", "unmatched `}`", t.span)
                         .with_label("no open `{` to close");
@@ -344,6 +348,9 @@ impl Parser<'_> {
             let start = self.pos;
             let t = self.peek();
             let r = match t {
+                Tok::Ident if self.at_hybrid_elem() => {
+                    self.hybrid_elem().map(|h| chart.body.hybrid.push(h))
+                }
                 Tok::Ident if self.at_temporal_decl() => {
                     self.temporal_property().map(|p| chart.properties.push(p))
                 }
@@ -558,7 +565,7 @@ impl Parser<'_> {
                     self.report(d);
                     return Err(Failed);
                 }
-                let within = self.expr();
+                let within = self.delay();
                 PropertyKind::Respond {
                     trigger,
                     response,
@@ -593,6 +600,20 @@ impl Parser<'_> {
             configurations: Vec::new(),
             span: start,
         };
+        self.system_elems(&mut sys, open, &what, None);
+        sys.span = self.span_from(start);
+        Ok(sys)
+    }
+
+    /// The elements of a system (or, with `ports`, a component) body after its `{`; a
+    /// component's `input`/`output` declarations go to `ports`.
+    pub(super) fn system_elems(
+        &mut self,
+        sys: &mut System,
+        open: Span,
+        what: &str,
+        mut ports: Option<&mut Vec<VarDecl>>,
+    ) {
         loop {
             if self.at_kw(Kw::Requirement) && self.nth(1).kind != Tok::Kw(Kw::Chart) {
                 let pos = self.pos;
@@ -605,12 +626,17 @@ impl Parser<'_> {
                 }
                 continue;
             }
-            if self.at_list_end(open, &what, is_item_kw) {
+            if self.at_list_end(open, what, is_item_kw) {
                 break;
             }
             let pos = self.pos;
             let t = self.peek();
             let r = match t {
+                Tok::Kw(Kw::Input | Kw::Output) if ports.is_some() => self.var_decl().map(|v| {
+                    if let Some(p) = ports.as_deref_mut() {
+                        p.push(v);
+                    }
+                }),
                 Tok::Ident if self.at_temporal_decl() => {
                     self.temporal_property().map(|p| sys.properties.push(p))
                 }
@@ -669,8 +695,6 @@ impl Parser<'_> {
                 self.bump();
             }
         }
-        sys.span = self.span_from(start);
-        Ok(sys)
     }
 
     /// `'instance' IDENT [ '[' expr ']' ] ':' IDENT [ '(' args ')' ] ';'`

@@ -207,6 +207,20 @@ impl Printer {
             }
             Item::Chart(c) => self.chart(c),
             Item::System(s) => self.system(s),
+            Item::Component(c) => {
+                let imps: Vec<&str> = c.implements.iter().map(|i| i.name.as_str()).collect();
+                self.line(format!(
+                    "component {} implements [{}]",
+                    c.name.name,
+                    imps.join(", ")
+                ));
+                self.nested(|p| {
+                    for m in &c.ports {
+                        p.line(format!("{:?} {} event={}", m.kind, m.name.name, m.is_event));
+                    }
+                    p.system(&c.body);
+                });
+            }
             Item::Interface(i) => {
                 self.line(format!("interface {}", i.name.name));
                 self.nested(|p| {
@@ -270,7 +284,10 @@ impl Printer {
                 "respond {n}: {} => {} within {}",
                 expr(trigger),
                 expr(response),
-                expr(within)
+                match within {
+                    Delay::Ticks(e) => expr(e),
+                    Delay::Time(d) => duration(d),
+                }
             )),
             PropertyKind::RespondEventually { trigger, response } => self.line(format!(
                 "respond {n}: {} => {}",
