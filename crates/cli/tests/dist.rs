@@ -235,11 +235,6 @@ fn counter_counts_and_shortest_violation_on_every_layout() {
 }
 
 #[test]
-fn fam_alone_as_single_process() {
-    same_as_single("examples/fam/fam_alone.sc", &[], "fam");
-}
-
-#[test]
 fn linear_drive_as_single_process_bounded() {
     // Ten ticks of the linear drive (the whole space takes long in a test); the temporal
     // `respond ... within` rows are bounded properties, checked like invariants.
