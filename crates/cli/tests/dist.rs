@@ -235,6 +235,13 @@ fn counter_counts_and_shortest_violation_on_every_layout() {
 }
 
 #[test]
+fn fam_alone_as_single_process() {
+    // Many input vectors per tick: a wrong input position or a parent link taken in the wrong
+    // round would make a counterexample that does not replay (`replay_all`).
+    same_as_single("examples/fam/fam_alone.sc", &[], "fam");
+}
+
+#[test]
 fn linear_drive_as_single_process_bounded() {
     // Ten ticks of the linear drive (the whole space takes long in a test); the temporal
     // `respond ... within` rows are bounded properties, checked like invariants.

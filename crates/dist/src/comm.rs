@@ -1,9 +1,12 @@
 //! The one kind of channel the search uses: records addressed to a worker, exchanged by
 //! timely dataflow and collected in the addressee's inbox; a round ends when timely's progress
 //! tracking says no record of that round is in flight anywhere (the probe's frontier passed
-//! it), so every worker then holds everything sent to it in the round.
+//! it), so every worker then holds everything sent to it in the round. Records are kept by
+//! round: a faster worker may already send the next round's records while this one still
+//! waits for the end of the current round, and those must not be taken with it.
 
 use std::cell::RefCell;
+use std::collections::BTreeMap;
 use std::rc::Rc;
 use timely::container::CapacityContainerBuilder;
 use timely::dataflow::channels::pact::Exchange;
@@ -27,7 +30,8 @@ pub(crate) fn msg_bytes(m: &Msg) -> u64 {
 pub(crate) struct Channel {
     input: InputHandleVec<u64, Msg>,
     probe: ProbeHandle<u64>,
-    inbox: Rc<RefCell<Vec<Msg>>>,
+    /// The records received, by the round they were sent in.
+    inbox: Rc<RefCell<BTreeMap<u64, Vec<Msg>>>>,
     /// Bytes of the records in the inbox.
     held: Rc<std::cell::Cell<u64>>,
     round: u64,
@@ -38,7 +42,7 @@ impl Channel {
     pub fn new(worker: &mut Worker) -> Channel {
         let mut input = InputHandleVec::new();
         let probe = ProbeHandle::new();
-        let inbox = Rc::new(RefCell::new(Vec::new()));
+        let inbox = Rc::new(RefCell::new(BTreeMap::new()));
         let sink = Rc::clone(&inbox);
         let held = Rc::new(std::cell::Cell::new(0u64));
         let count = Rc::clone(&held);
@@ -51,10 +55,13 @@ impl Channel {
                     "Inbox",
                     move |_, _| {
                         move |input, _output| {
-                            input.for_each(|_, data| {
+                            input.for_each(|cap, data| {
                                 let b: u64 = data.iter().map(msg_bytes).sum();
                                 count.set(count.get() + b);
-                                sink.borrow_mut().append(data);
+                                sink.borrow_mut()
+                                    .entry(cap.least().copied().unwrap_or_default())
+                                    .or_insert_with(Vec::new)
+                                    .append(data);
                             });
                         }
                     },
@@ -77,15 +84,23 @@ impl Channel {
     }
 
     /// End the round: step the worker until every record of the round, from every worker,
-    /// has reached its addressee; returns this worker's inbox.
+    /// has reached its addressee; returns this worker's records of the round (records of a
+    /// later round, sent by a worker that is ahead, stay for their round).
     pub fn finish_round(&mut self, worker: &mut Worker) -> Vec<Msg> {
         self.round += 1;
         self.input.advance_to(self.round);
         while self.probe.less_than(self.input.time()) {
             worker.step();
         }
-        self.held.set(0);
-        std::mem::take(&mut *self.inbox.borrow_mut())
+        let mut inbox = self.inbox.borrow_mut();
+        let later = inbox.split_off(&self.round);
+        let done: Vec<Msg> = std::mem::replace(&mut *inbox, later)
+            .into_values()
+            .flatten()
+            .collect();
+        let taken: u64 = done.iter().map(msg_bytes).sum();
+        self.held.set(self.held.get().saturating_sub(taken));
+        done
     }
 
     /// Bytes of the records received so far in this round.
