@@ -1,7 +1,8 @@
 //! `statecheck analyse FILE [--scenario S]`: the continuous model's exact times
 //! (docs/hybrid.md). Without a scenario, each moving state's clock readings at the grid
 //! points; with one, the exact times at which the continuous motion reaches each critical
-//! point during the run, beside the tick at which the discretized model got there.
+//! point during the run, beside the tick at which the discretized model got there; with
+//! `--depth N`, the same for every sequence of discrete choices (`analyse_choices.rs`).
 
 use crate::{diag, load, Exit};
 use anyhow::{bail, Result};
@@ -19,6 +20,15 @@ pub struct AnalyseArgs {
     /// A scenario file: follow its run and list when each critical point is reached.
     #[arg(long)]
     pub scenario: Option<String>,
+    /// For every sequence of discrete choices up to this many (the free inputs, chosen at
+    /// tick 1, at each switch of a motion and when the system rests), list when each sensor's
+    /// zone is entered and left, exactly, and whether the grid contains each time.
+    #[arg(long, conflicts_with = "scenario")]
+    pub depth: Option<usize>,
+    /// With `--depth`: the most sequences listed (more: the output says it is truncated and
+    /// the exit code is 3).
+    #[arg(long, default_value_t = 200, requires = "depth")]
+    pub max_runs: usize,
     /// Print JSON instead of a table.
     #[arg(long)]
     pub json: bool,
@@ -44,6 +54,9 @@ pub fn run(a: AnalyseArgs) -> Result<u8> {
         bail!("the model declares no `tick`");
     };
     let tick = Ratio::new(ms as i128, 1000).unwrap_or(Ratio::ZERO);
+    if let Some(depth) = a.depth {
+        return crate::analyse_choices::run(&loaded, &a, depth, &charts, tick);
+    }
     match &a.scenario {
         None => readings(&charts, tick, a.json),
         Some(path) => events(&loaded, &a, path, &charts, tick),
