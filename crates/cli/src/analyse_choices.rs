@@ -44,7 +44,11 @@ pub fn run(
             continue;
         };
         let base = chart.name.split('(').next().unwrap_or(&chart.name);
-        let Some(cp) = charts.iter().find(|c| c.chart == base) else {
+        let Some(cp) = charts
+            .iter()
+            .find(|c| c.chart == chart.name)
+            .or_else(|| charts.iter().find(|c| c.chart == base))
+        else {
             continue;
         };
         // A switch of the dynamics is a transition of the plant: a change of its states.

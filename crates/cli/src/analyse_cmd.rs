@@ -37,13 +37,19 @@ pub struct AnalyseArgs {
 /// Run `analyse`.
 pub fn run(a: AnalyseArgs) -> Result<u8> {
     let loaded = load::load(&a.model, false)?;
-    let charts = match hybrid::plans(&loaded.file) {
+    let mut charts = match hybrid::plans(&loaded.file) {
         Ok(c) => c,
         Err(diags) => {
             diag::eprint_sources(&loaded.sources, &diags);
             return Err(load::ModelErrors.into());
         }
     };
+    // A parameterised chart is discretized per copy, with its values (`Mover(20)`).
+    for cp in &loaded.model.hybrid {
+        if !charts.iter().any(|c| c.chart == cp.chart) {
+            charts.push(cp.clone());
+        }
+    }
     if charts.is_empty() {
         bail!(
             "`{}` declares no continuous variable (docs/hybrid.md)",
@@ -164,7 +170,11 @@ fn events(
         };
         // A parameterised copy is named `Chart(args)`.
         let base = chart.name.split('(').next().unwrap_or(&chart.name);
-        let Some(cp) = charts.iter().find(|c| c.chart == base) else {
+        let Some(cp) = charts
+            .iter()
+            .find(|c| c.chart == chart.name)
+            .or_else(|| charts.iter().find(|c| c.chart == base))
+        else {
             continue;
         };
         for p in &cp.plans {

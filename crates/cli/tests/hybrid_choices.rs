@@ -178,3 +178,43 @@ fn too_many_sequences_are_cut_and_said_so() {
         .as_str()
         .is_some_and(|t| t.contains("first 5")));
 }
+
+#[test]
+fn parameterised_copies_are_analysed_with_their_own_speeds() {
+    // tests/hybrid/params.sc: Mover(20) at 2 %/s and Mover(8) at 0.8 %/s, both started by
+    // the first choice (both `go` in tick 1): at_end (95 %) at 1.25 + 47.5 = 48.75 s (tick 39)
+    // for the light one and 1.25 + 118.75 = 120 s (tick 96) for the heavy one; each
+    // invariant is first violated then.
+    let (_, v) = analyse("params.sc", "2", &[]);
+    let runs = v["runs"].as_array().expect("runs");
+    let both = runs
+        .iter()
+        .find(|r| {
+            let c = choices(r);
+            c.contains(&"1:light.go=true".to_string()) && c.contains(&"1:heavy.go=true".to_string())
+        })
+        .unwrap_or_else(|| panic!("{v:#}"));
+    let zs = zones(both);
+    assert_eq!(
+        zs[..2],
+        [
+            z("light.at_end", "entered", "48.75", 39, 39),
+            z("heavy.at_end", "entered", "120", 96, 96),
+        ]
+    );
+    let viol: Vec<(String, u64)> = both["violations"]
+        .as_array()
+        .expect("violations")
+        .iter()
+        .map(|x| {
+            (
+                x["property"].as_str().unwrap_or("").to_string(),
+                x["tick"].as_u64().unwrap_or(0),
+            )
+        })
+        .collect();
+    assert_eq!(
+        viol,
+        vec![("light_end".to_string(), 39), ("heavy_end".to_string(), 96)]
+    );
+}

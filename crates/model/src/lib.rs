@@ -237,6 +237,11 @@ pub fn check(file: &ast::File) -> (Model, Vec<Diagnostic>) {
         charts,
         systems,
         tick_ms: globals_ref.tick_ms,
+        hybrid: discretized
+            .iter()
+            .chain(copies.iter())
+            .flat_map(|d| d.plans.iter().cloned())
+            .collect(),
     };
     let mut diags = ck.sink.diags;
     cascade::suppress(file, &mut diags);

@@ -29,6 +29,10 @@ pub struct Model {
     pub systems: Vec<System>,
     /// Length of one tick in milliseconds, if declared.
     pub tick_ms: Option<i64>,
+    /// The continuous variables of every discretized chart, by the chart's name in
+    /// [`Model::charts`] (a parameterised chart's copies each with their values:
+    /// `Mover(20)`), for `statecheck analyse` (docs/hybrid.md).
+    pub hybrid: Vec<crate::hybrid::ChartPlans>,
 }
 
 /// `enum Name { A, B }`

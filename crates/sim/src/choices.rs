@@ -206,7 +206,11 @@ pub fn enumerate(
     };
     match tick_once(program, &mut m, 0, &init, &mut reached, &mut || {}) {
         Ok(()) => {}
-        Err(Stop::Violation { property, .. }) => root.violations.push((0, property)),
+        Err(Stop::Violation { .. }) => {
+            for name in violated(program, &mut m) {
+                root.violations.push((0, name));
+            }
+        }
         Err(Stop::AssumeViolated { .. }) => root.end = Some(End::Blocked(0)),
         Err(_) => root.end = Some(End::RuntimeError(0)),
     }
@@ -262,7 +266,12 @@ pub fn enumerate(
                 let r = tick_once(program, &mut m, t, &inputs, &mut reached, &mut || {});
                 match r {
                     Ok(()) => {}
-                    Err(Stop::Violation { property, .. }) => seg.violations.push((t, property)),
+                    Err(Stop::Violation { .. }) => {
+                        // Every property violated in this tick, not only the first.
+                        for name in violated(program, &mut m) {
+                            seg.violations.push((t, name));
+                        }
+                    }
                     Err(Stop::AssumeViolated { .. }) => {
                         // Held inputs no longer allowed: the environment must choose again.
                         m.load_state(&before);
@@ -336,6 +345,17 @@ pub fn enumerate(
         valuations: vals.len(),
         truncated,
     }
+}
+
+/// The safety properties (not `reachable`) the machine's state violates, in declaration order.
+fn violated(program: &Program, m: &mut Machine) -> Vec<String> {
+    let mut holds = |e| m.eval(e).is_ok_and(|v| v != 0);
+    program
+        .properties
+        .iter()
+        .filter(|p| !p.goal.is_reach() && p.goal.decided_by(&mut holds))
+        .map(|p| p.name.clone())
+        .collect()
 }
 
 /// The run of the sequence that ends with segment `at`.
