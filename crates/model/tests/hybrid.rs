@@ -297,3 +297,25 @@ plant chart P {
     let got = rows(analyse::zone_events(p, tick, &modes, &[low, late]));
     assert_eq!(got[1], (1, true, r(26, 5), Some(26), Some(27), false));
 }
+
+#[test]
+fn constants_in_temporal_formulas_are_critical_points() {
+    // 4 cells of 25; `G p.x <= 30` (ltl) and `AG (p.x != 60)` (ctl) compare x with 30 and 60,
+    // which the cells miss: both are forced onto the grid.
+    let src = "tick 1 s;
+plant chart P {
+  continuous x: [0 .. 100] = 0;
+  grid x 4;
+  initial Go;
+  state Go { der(x) = 5; }
+}
+system S {
+  instance p: P;
+  ltl low: G p.x <= 30;
+  ctl not60: AG (p.x != 60);
+}";
+    let c = plans(src);
+    let p = &c[0].plans[0];
+    assert_eq!(p.forced, vec![30, 60]);
+    assert_eq!(p.points, vec![0, 25, 30, 50, 60, 75, 100]);
+}
