@@ -14,6 +14,7 @@ use crate::scope::Scope;
 use crate::types::Type;
 use statecheck_base::{Diagnostic, Span};
 use statecheck_syntax::ast;
+use statecheck_syntax::ast::visit_mut::{walk_expr, VisitMut};
 use std::collections::HashMap;
 
 /// Why a chart of the expanded file exists.
@@ -427,18 +428,7 @@ fn specialise(c: &ast::Chart, values: &[Value], name: String, ck: &ExprChecker<'
             .map(|(p, v)| (p.name.name.clone(), literal(*v, ck)))
             .collect(),
     };
-    for v in &mut out.vars {
-        if let Some(t) = &mut v.ty {
-            s.ty(t);
-        }
-        if let Some(e) = &mut v.init {
-            s.expr(e);
-        }
-    }
-    s.body(&mut out.body);
-    for p in &mut out.properties {
-        s.property(p);
-    }
+    s.visit_chart(&mut out);
     out
 }
 
@@ -486,227 +476,25 @@ impl Literal {
     }
 }
 
-/// Replaces parameter names by their values throughout a chart.
+/// Replaces parameter names by their values throughout a chart (every expression the AST
+/// walk visits: types, initial values, guards, actions, delays, hybrid bounds, properties).
 struct Subst {
     names: HashMap<String, Literal>,
 }
 
-impl Subst {
-    fn expr(&mut self, e: &mut ast::Expr) {
-        match e {
-            ast::Expr::Path(p) => {
-                if let [seg] = p.segments.as_slice() {
-                    if seg.index.is_none() {
-                        if let Some(l) = self.names.get(&seg.name.name) {
-                            *e = l.at(p.span);
-                            return;
-                        }
-                    }
-                }
-                self.path(p);
-            }
-            ast::Expr::In(..) | ast::Expr::Int(..) | ast::Expr::Bool(..) | ast::Expr::Error(_) => {}
-            ast::Expr::Call { args, .. } => args.iter_mut().for_each(|a| self.expr(a)),
-            ast::Expr::Unary(_, a, _) => self.expr(a),
-            ast::Expr::Binary(_, a, b, _) => {
-                self.expr(a);
-                self.expr(b);
-            }
-            ast::Expr::If(c, a, b, _) => {
-                self.expr(c);
-                self.expr(a);
-                self.expr(b);
-            }
-        }
-    }
-
-    fn path(&mut self, p: &mut ast::Path) {
-        for seg in &mut p.segments {
-            if let Some(ast::Index::At(e)) = &mut seg.index {
-                self.expr(e);
-            }
-        }
-    }
-
-    fn ty(&mut self, t: &mut ast::TypeExpr) {
-        if let ast::TypeExpr::Range { lo, hi, .. } = t {
-            self.expr(lo);
-            self.expr(hi);
-        }
-    }
-
-    fn block(&mut self, b: &mut ast::Block) {
-        for s in &mut b.stmts {
-            match s {
-                ast::Stmt::Assign { value, .. } => self.expr(value),
-                ast::Stmt::Raise { .. } => {}
-                ast::Stmt::If {
-                    cond,
-                    then,
-                    otherwise,
-                    ..
-                } => {
-                    self.expr(cond);
-                    self.block(then);
-                    if let Some(o) = otherwise {
-                        self.block(o);
+impl VisitMut for Subst {
+    fn visit_expr(&mut self, e: &mut ast::Expr) {
+        if let ast::Expr::Path(p) = e {
+            if let [seg] = p.segments.as_slice() {
+                if seg.index.is_none() {
+                    if let Some(l) = self.names.get(&seg.name.name) {
+                        *e = l.at(p.span);
+                        return;
                     }
                 }
             }
         }
-    }
-
-    fn body(&mut self, b: &mut ast::StateBody) {
-        for blk in b.entry.iter_mut().chain(&mut b.during).chain(&mut b.exit) {
-            self.block(blk);
-        }
-        for h in &mut b.hybrid {
-            self.hybrid(h);
-        }
-        for i in &mut b.initial {
-            if let Some(a) = &mut i.action {
-                self.block(a);
-            }
-        }
-        for s in &mut b.states {
-            self.body(&mut s.body);
-        }
-        for r in &mut b.regions {
-            self.body(&mut r.body);
-        }
-        for j in &mut b.junctions {
-            self.branches(&mut j.branches);
-        }
-        for t in &mut b.transitions {
-            if let Some(ast::Trigger::After { delay, .. }) = &mut t.trigger {
-                match delay {
-                    ast::Delay::Ticks(e) => self.expr(e),
-                    ast::Delay::Time(d) => self.expr(&mut d.amount),
-                }
-            }
-            if let Some(g) = &mut t.guard {
-                self.expr(g);
-            }
-            if let Some(a) = &mut t.action {
-                self.block(a);
-            }
-            if let Some(target) = &mut t.target {
-                self.target(target);
-            }
-        }
-    }
-
-    /// A continuous-variable element (`docs/hybrid.md`): bounds, cells and speeds may name
-    /// parameters.
-    fn hybrid(&mut self, h: &mut ast::HybridElem) {
-        match h {
-            ast::HybridElem::Continuous { lo, hi, init, .. } => {
-                self.expr(lo);
-                self.expr(hi);
-                if let Some(i) = init {
-                    self.expr(i);
-                }
-            }
-            ast::HybridElem::Grid { cells, .. } => {
-                if let Some(c) = cells {
-                    self.expr(c);
-                }
-            }
-            ast::HybridElem::Sensor { lo, hi, .. } => {
-                self.expr(lo);
-                self.expr(hi);
-            }
-            ast::HybridElem::Der { rate, .. } => match rate {
-                ast::SpeedExpr::Constant(s) => self.speed(s),
-                ast::SpeedExpr::Profile(segs, last) => {
-                    for (s, d) in segs.iter_mut() {
-                        self.speed(s);
-                        self.expr(&mut d.amount);
-                    }
-                    self.speed(last);
-                }
-            },
-        }
-    }
-
-    fn speed(&mut self, s: &mut ast::Speed) {
-        for n in std::iter::once(&mut s.num).chain(s.den.as_mut()) {
-            if let ast::SpeedNumber::Expr(e) = n {
-                self.expr(e);
-            }
-        }
-    }
-
-    fn target(&mut self, t: &mut ast::Target) {
-        if let ast::Target::Choice { branches, .. } = t {
-            self.branches(branches);
-        }
-    }
-
-    fn branches(&mut self, bs: &mut [ast::Branch]) {
-        for b in bs {
-            if let Some(g) = &mut b.guard {
-                self.expr(g);
-            }
-            if let Some(a) = &mut b.action {
-                self.block(a);
-            }
-            self.target(&mut b.target);
-        }
-    }
-
-    fn property(&mut self, p: &mut ast::Property) {
-        match &mut p.kind {
-            ast::PropertyKind::Invariant { expr, assuming } => {
-                self.expr(expr);
-                if let Some(a) = assuming {
-                    self.expr(a);
-                }
-            }
-            ast::PropertyKind::Reachable { expr } | ast::PropertyKind::Nonblocking { expr } => {
-                self.expr(expr)
-            }
-            ast::PropertyKind::Respond {
-                trigger,
-                response,
-                within,
-            } => {
-                self.expr(trigger);
-                self.expr(response);
-                match within {
-                    ast::Delay::Ticks(e) => self.expr(e),
-                    ast::Delay::Time(d) => self.expr(&mut d.amount),
-                }
-            }
-            ast::PropertyKind::RespondEventually { trigger, response } => {
-                self.expr(trigger);
-                self.expr(response);
-            }
-            ast::PropertyKind::Ltl { formula } | ast::PropertyKind::Ctl { formula } => {
-                self.formula(formula)
-            }
-            ast::PropertyKind::Fair { trigger, expr } => {
-                if let Some(t) = trigger {
-                    self.expr(t);
-                }
-                self.expr(expr);
-            }
-        }
-    }
-
-    fn formula(&mut self, f: &mut ast::Formula) {
-        match f {
-            ast::Formula::Atom(e) => self.expr(e),
-            ast::Formula::Not(a, _) | ast::Formula::Unary(_, a, _) => self.formula(a),
-            ast::Formula::And(a, b, _)
-            | ast::Formula::Or(a, b, _)
-            | ast::Formula::Implies(a, b, _)
-            | ast::Formula::Binary(_, a, b, _)
-            | ast::Formula::QuantUntil(_, a, b, _) => {
-                self.formula(a);
-                self.formula(b);
-            }
-        }
+        walk_expr(self, e);
     }
 }
 

@@ -9,6 +9,7 @@ pub use crate::formula::{Formula, Quant, TempBin, TempOp};
 pub use hybrid::{HybridElem, Speed, SpeedExpr, SpeedNumber};
 
 mod hybrid;
+pub mod visit_mut;
 
 /// An identifier with its span.
 #[derive(Clone, Debug, PartialEq, Eq)]
