@@ -277,6 +277,8 @@ fn check_connections(
     instances: &[Instance],
 ) -> Vec<Connection> {
     let mut out: Vec<Connection> = Vec::new();
+    // Each connected input and its connection's index in `out`: one look-up per connection.
+    let mut seen: std::collections::HashMap<(u32, u32), usize> = Default::default();
     for c in &s.connections {
         let (Some(from), Some(to)) = (
             endpoint(ck, scope, &c.from, false),
@@ -344,7 +346,7 @@ fn check_connections(
                     continue;
                 }
             }
-            if let Some(prev) = out.iter().find(|o| o.to == (ti, tv)) {
+            if let Some(prev) = seen.get(&(ti, tv)).map(|&k| &out[k]) {
                 ck.sink.push(
                     Diagnostic::error(
                         "E0123",
@@ -366,6 +368,7 @@ fn check_connections(
                         ),
                 );
             }
+            seen.insert((ti, tv), out.len());
             out.push(Connection {
                 from: (fi, fv),
                 to: (ti, tv),

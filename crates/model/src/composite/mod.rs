@@ -12,6 +12,7 @@
 
 mod ports;
 mod scope;
+mod size;
 mod slots;
 mod visit;
 
@@ -97,9 +98,21 @@ pub(crate) fn flatten(file: &ast::File, diags: &mut Vec<Diagnostic>) -> Option<F
     let mut standalone = HashSet::new();
     let mut extra = Vec::new();
     let mut components = Vec::new();
+    let mut sizes = HashMap::new();
+    // A component too big to run alone is reported only in a file without systems (in a
+    // file with systems, the systems that instantiate it are).
+    let report_alone = !file.items.iter().any(|i| matches!(i, ast::Item::System(_)));
     for item in &file.items {
         match item {
             ast::Item::System(s) => {
+                if size::too_big(s, &comps, &mut sizes, Some(&mut *diags)) {
+                    // Refused before any work: an empty system keeps the systems' order.
+                    let mut empty = scope::Flattener::empty_system();
+                    empty.name = s.name.clone();
+                    empty.span = s.span;
+                    out.items.push(ast::Item::System(empty));
+                    continue;
+                }
                 let mut f = scope::Flattener::new(&comps, &known, diags, &s.name.name);
                 let mut flat = f.system(s, None);
                 links.extend(f.links);
@@ -112,6 +125,12 @@ pub(crate) fn flatten(file: &ast::File, diags: &mut Vec<Diagnostic>) -> Option<F
                 if comps
                     .get(c.name.name.as_str())
                     .is_some_and(|k| std::ptr::eq(*k, c))
+                    && !size::too_big(
+                        &c.body,
+                        &comps,
+                        &mut sizes,
+                        report_alone.then_some(&mut *diags),
+                    )
                 {
                     let mut f = scope::Flattener::new(&comps, &known, diags, &c.name.name);
                     let flat = f.system(&c.body, Some(c));

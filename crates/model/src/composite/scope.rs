@@ -161,7 +161,8 @@ impl<'a, 'd> Flattener<'a, 'd> {
         out
     }
 
-    fn empty_system() -> ast::System {
+    /// A system with nothing in it.
+    pub fn empty_system() -> ast::System {
         ast::System {
             name: ast::Ident {
                 name: String::new(),
@@ -342,7 +343,9 @@ impl<'a, 'd> Flattener<'a, 'd> {
         }
         // Components nested a few levels deep multiply: bound the instances visited, not
         // only the leaves kept, so that the flattening's time and memory stay bounded.
-        if self.scopes.len() + self.leaves >= MAX_INSTANCES {
+        // (The chart instances a system flattens to are counted before flattening, E0174;
+        // this bounds component instances without any chart inside.)
+        if self.scopes.len() >= MAX_INSTANCES {
             if self.leaves <= MAX_INSTANCES {
                 self.leaves = MAX_INSTANCES + 1;
                 self.diags.push(
