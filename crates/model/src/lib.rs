@@ -57,6 +57,23 @@ pub fn check(file: &ast::File) -> (Model, Vec<Diagnostic>) {
         Some(c) => (&c.file, c.origins.as_slice()),
         None => (file, &[][..]),
     };
+    // Parameterised components become one component per argument list, arrays of
+    // components get literal lengths (`composite/params.rs`).
+    let comp_params = {
+        let view = globals.clone();
+        let mut sub = ExprChecker {
+            globals: &view,
+            sink: Sink {
+                diags: Vec::new(),
+                muted: 0,
+            },
+            next_local: 0,
+        };
+        let e = composite::expand_params(file, &mut sub);
+        early.extend(sub.sink.diags);
+        e
+    };
+    let file = comp_params.as_ref().unwrap_or(file);
     // Component instances become their inner instances, systems flat (`composite/`).
     let flattened = composite::flatten(file, &mut early);
     let (file, sys_origins) = match &flattened {
@@ -252,6 +269,7 @@ pub fn check(file: &ast::File) -> (Model, Vec<Diagnostic>) {
     if expanded.is_some() || configured.is_some() || flattened.is_some() {
         params::dedup(&mut diags);
         components::suppress_slot_cascades(file, &mut diags);
+        composite::suppress_cascades(&mut diags);
     }
     (model, diags)
 }

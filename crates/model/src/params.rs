@@ -17,6 +17,16 @@ use statecheck_syntax::ast;
 use statecheck_syntax::ast::visit_mut::{walk_expr, VisitMut};
 use std::collections::HashMap;
 
+/// What declares parameters: a chart or a component.
+pub(crate) struct Decl<'x> {
+    /// `"chart"` or `"component"`, for the messages.
+    pub kind: &'static str,
+    /// Its name.
+    pub name: &'x ast::Ident,
+    /// Its parameters.
+    pub params: &'x [ast::ChartParam],
+}
+
 /// Why a chart of the expanded file exists.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub(crate) enum Origin {
@@ -44,7 +54,7 @@ pub(crate) struct Expanded {
 
 /// A parameter's value.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-enum Value {
+pub(crate) enum Value {
     Int(i64),
     Bool(bool),
     Enum(u32, i64),
@@ -117,7 +127,12 @@ pub(crate) fn expand(file: &ast::File, ck: &mut ExprChecker<'_>) -> Option<Expan
                 continue;
             }
             let sig = &sigs[c.name.name.as_str()];
-            let Some(values) = bind(c, sig, &args, inst, ck) else {
+            let decl = Decl {
+                kind: "chart",
+                name: &c.name,
+                params: &c.params,
+            };
+            let Some(values) = bind(&decl, sig, &args, inst, ck) else {
                 continue; // reported; the instance keeps the plain (placeholder) copy
             };
             let defaults: Option<Vec<Value>> = sig.iter().map(|(_, d)| *d).collect();
@@ -215,9 +230,9 @@ fn check_param_names(c: &ast::Chart, ck: &mut ExprChecker<'_>) {
 }
 
 /// The values of an instance's arguments, positional then named, with defaults for the rest;
-/// `None` after reporting a missing, extra or bad argument.
-fn bind(
-    c: &ast::Chart,
+/// `None` after reporting a missing, extra or bad argument (E0150, E0151).
+pub(crate) fn bind(
+    c: &Decl<'_>,
     sig: &[(Type, Option<Value>)],
     args: &[ast::Arg],
     inst: &ast::Instance,
@@ -235,7 +250,8 @@ fn bind(
                         Diagnostic::error(
                             "E0150",
                             format!(
-                                "chart `{}` takes {} parameter{}, this is argument {positional}",
+                                "{} `{}` takes {} parameter{}, this is argument {positional}",
+                                c.kind,
                                 c.name.name,
                                 c.params.len(),
                                 if c.params.len() == 1 { "" } else { "s" }
@@ -243,7 +259,7 @@ fn bind(
                             a.span,
                         )
                         .with_label("extra argument")
-                        .with_secondary(c.name.span, "chart declared here"),
+                        .with_secondary(c.name.span, format!("{} declared here", c.kind)),
                     );
                     ok = false;
                     continue;
@@ -256,16 +272,16 @@ fn bind(
                     let names = c.params.iter().map(|p| p.name.name.as_str());
                     let hint = match crate::suggest::closest(&n.name, names) {
                         Some(s) => format!("did you mean `{s}`?"),
-                        None => format!("the parameters are: {}", param_list(c)),
+                        None => format!("the parameters are: {}", param_list(c.params)),
                     };
                     ck.sink.push(
                         Diagnostic::error(
                             "E0150",
-                            format!("chart `{}` has no parameter `{}`", c.name.name, n.name),
+                            format!("{} `{}` has no parameter `{}`", c.kind, c.name.name, n.name),
                             n.span,
                         )
                         .with_label("unknown parameter")
-                        .with_secondary(c.name.span, "chart declared here")
+                        .with_secondary(c.name.span, format!("{} declared here", c.kind))
                         .with_hint(hint),
                     );
                     ok = false;
@@ -293,7 +309,7 @@ fn bind(
         let (ty, default) = sig[i];
         match given[i] {
             Some((a, _)) => {
-                let what = format!("argument `{}` of chart `{}`", p.name.name, c.name.name);
+                let what = format!("argument `{}` of {} `{}`", p.name.name, c.kind, c.name.name);
                 match value_of(ck, &a.value, ty, &what) {
                     Some(v) => values.push(v),
                     None => ok = false,
@@ -308,8 +324,8 @@ fn bind(
                             Diagnostic::error(
                                 "E0151",
                                 format!(
-                                    "instance `{}` gives no value for parameter `{}` of chart `{}`",
-                                    inst.name.name, p.name.name, c.name.name
+                                    "instance `{}` gives no value for parameter `{}` of {} `{}`",
+                                    inst.name.name, p.name.name, c.kind, c.name.name
                                 ),
                                 at,
                             )
@@ -322,7 +338,7 @@ fn bind(
                                 "give it: `{}({} = …)`; the parameters are: {}",
                                 c.name.name,
                                 p.name.name,
-                                param_list(c)
+                                param_list(c.params)
                             )),
                         );
                     }
@@ -342,8 +358,8 @@ fn args_span(inst: &ast::Instance, args: &[ast::Arg]) -> Span {
     Span::new(inst.chart.span.start as usize, end as usize)
 }
 
-fn param_list(c: &ast::Chart) -> String {
-    c.params
+fn param_list(params: &[ast::ChartParam]) -> String {
+    params
         .iter()
         .map(|p| format!("`{}`", p.name.name))
         .collect::<Vec<_>>()
@@ -351,7 +367,12 @@ fn param_list(c: &ast::Chart) -> String {
 }
 
 /// A constant argument (or default) of type `ty`; `None` after reporting why not.
-fn value_of(ck: &mut ExprChecker<'_>, e: &ast::Expr, ty: Type, what: &str) -> Option<Value> {
+pub(crate) fn value_of(
+    ck: &mut ExprChecker<'_>,
+    e: &ast::Expr,
+    ty: Type,
+    what: &str,
+) -> Option<Value> {
     let empty = Scope {
         chart: None,
         instances: None,
@@ -411,8 +432,13 @@ fn show(v: Value, ck: &ExprChecker<'_>) -> String {
 
 /// `Sensor(0, 9)`: the name of a copy (not an identifier, so it clashes with nothing).
 fn copy_name(c: &ast::Chart, values: &[Value], ck: &ExprChecker<'_>) -> String {
+    named_copy(&c.name.name, values, ck)
+}
+
+/// `Name(0, 9)`: a copy's name from its declaration's name and argument values.
+pub(crate) fn named_copy(name: &str, values: &[Value], ck: &ExprChecker<'_>) -> String {
     let vs: Vec<String> = values.iter().map(|v| show(*v, ck)).collect();
-    format!("{}({})", c.name.name, vs.join(", "))
+    format!("{name}({})", vs.join(", "))
 }
 
 /// The chart with every use of a parameter replaced by its value.
@@ -433,7 +459,7 @@ fn specialise(c: &ast::Chart, values: &[Value], name: String, ck: &ExprChecker<'
 }
 
 /// The value as an expression: a literal, or `Enum.LITERAL` for an enum.
-fn literal(v: Value, ck: &ExprChecker<'_>) -> Literal {
+pub(crate) fn literal(v: Value, ck: &ExprChecker<'_>) -> Literal {
     match v {
         Value::Int(n) => Literal::Int(n),
         Value::Bool(b) => Literal::Bool(b),
@@ -449,8 +475,9 @@ fn literal(v: Value, ck: &ExprChecker<'_>) -> Literal {
     }
 }
 
+/// A parameter's value as the expression that replaces the parameter's uses.
 #[derive(Clone)]
-enum Literal {
+pub(crate) enum Literal {
     Int(i64),
     Bool(bool),
     Enum(String, String),
@@ -478,8 +505,9 @@ impl Literal {
 
 /// Replaces parameter names by their values throughout a chart (every expression the AST
 /// walk visits: types, initial values, guards, actions, delays, hybrid bounds, properties).
-struct Subst {
-    names: HashMap<String, Literal>,
+pub(crate) struct Subst {
+    /// Each parameter's value.
+    pub names: HashMap<String, Literal>,
 }
 
 impl VisitMut for Subst {

@@ -52,12 +52,15 @@ pub enum Item {
     Component(Component),
 }
 
-/// `component Name [implements I, …] { port; … instance …; connect …; order …; … }`: a
+/// `component Name[(params)] [implements I, …] { port; … instance …; connect …; … }`: a
 /// composite component with a declared interface (its ports) built from instances.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Component {
     /// The component's name.
     pub name: Ident,
+    /// Compile-time parameters, `component Storage(n: int) { … }`, like a chart's; empty
+    /// without a parameter list. Instances give arguments (`docs/components.md`).
+    pub params: Vec<ChartParam>,
     /// The interfaces it declares it implements.
     pub implements: Vec<Ident>,
     /// Its ports: `input`/`output` variables and events (no initial values).

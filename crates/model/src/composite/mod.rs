@@ -10,12 +10,14 @@
 //! still one synchronous step, lowered once. Each component also runs alone as an implicit
 //! system named like it (its unconnected input ports are free inputs).
 
+mod params;
 mod ports;
 mod scope;
 mod size;
 mod slots;
 mod visit;
 
+pub(crate) use params::expand as expand_params;
 pub(crate) use ports::{check as check_ports, conformance};
 
 use statecheck_base::{Diagnostic, Span};
@@ -125,6 +127,8 @@ pub(crate) fn flatten(file: &ast::File, diags: &mut Vec<Diagnostic>) -> Option<F
                 if comps
                     .get(c.name.name.as_str())
                     .is_some_and(|k| std::ptr::eq(*k, c))
+                    // A copy with arguments (`Storage(3)`) runs only where instantiated.
+                    && !c.name.name.contains('(')
                     && !size::too_big(
                         &c.body,
                         &comps,
@@ -232,4 +236,18 @@ fn component_rules(c: &ast::Component, diags: &mut Vec<Diagnostic>) {
             );
         }
     }
+}
+
+/// Drop "unknown name" errors (E0101) at a path already reported as a bad index of a
+/// component array (E0176): the path stays as written, which the checker cannot resolve.
+pub(crate) fn suppress_cascades(diags: &mut Vec<Diagnostic>) {
+    let bad: HashSet<u32> = diags
+        .iter()
+        .filter(|d| d.code == "E0176")
+        .map(|d| d.span.start)
+        .collect();
+    if bad.is_empty() {
+        return;
+    }
+    diags.retain(|d| !(d.code == "E0101" && bad.contains(&d.span.start)));
 }
