@@ -362,3 +362,79 @@ fn an_array_of_components_simulates_by_element_path() {
     assert_eq!(n, ["0", "1", "1", "2", "2"], "{t1}");
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+const INTERLEAVED: &str = "tests/components/interleaved.sc";
+
+/// (exit code, states, transitions, verdict of `same`, its tick) of one system of
+/// `interleaved.sc` under one engine.
+fn same_verdict(system: &str, engine: &str) -> (i32, u64, u64, String, Option<u64>) {
+    let (code, out, err) = run(&[
+        "verify",
+        "--engine",
+        engine,
+        "--system",
+        system,
+        "--json",
+        INTERLEAVED,
+    ]);
+    let v: Value = serde_json::from_str(&out).unwrap_or_else(|e| panic!("{e}: {out}{err}"));
+    let row = v["results"]
+        .as_array()
+        .and_then(|a| a.iter().find(|r| r["property"] == "same"))
+        .cloned()
+        .unwrap_or(Value::Null);
+    (
+        code,
+        v["stats"]["states"].as_u64().unwrap_or(0),
+        v["stats"]["transitions"].as_u64().unwrap_or(0),
+        row["verdict"].as_str().unwrap_or("missing").to_string(),
+        row["tick"].as_u64(),
+    )
+}
+
+#[test]
+fn interleaved_composition_breaks_what_synchronous_composition_keeps() {
+    // By hand (interleaved.sc's header): synchronous, 3 states, 3 transitions, `same` holds;
+    // interleaved, 5 states, 10 transitions (2 scheduler choices), violated at tick 1 when
+    // `a` steps alone.
+    let (code, states, transitions, verdict, _) = same_verdict("Sync", "explicit");
+    assert_eq!(
+        (code, states, transitions, verdict.as_str()),
+        (0, 3, 3, "proved")
+    );
+    let (code, states, transitions, verdict, tick) = same_verdict("Async", "explicit");
+    assert_eq!(
+        (code, states, transitions, verdict.as_str(), tick),
+        (1, 5, 10, "violated", Some(1))
+    );
+    // A SAT engine: the same violation at the same depth, nothing found synchronously.
+    let (code, _, _, verdict, tick) = same_verdict("Async", "bmc");
+    assert_eq!((code, verdict.as_str(), tick), (1, "violated", Some(1)));
+    let (code, _, _, verdict, _) = same_verdict("Sync", "ic3");
+    assert_eq!((code, verdict.as_str()), (0, "proved"));
+    // The scheduler is an ordinary input of the trace: b alone in tick 1 keeps y == x
+    // (both false), a alone in tick 2 breaks it (exit 4: violated during sim).
+    let dir = std::env::temp_dir().join(format!("statecheck-interleaved-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).expect("temp dir");
+    let scn = dir.join("async.scn");
+    std::fs::write(&scn, "-\nsched.unit=1\nsched.unit=0\n").expect("write scenario");
+    let scn = scn.to_string_lossy().into_owned();
+    let (code, csv, err) = run(&[
+        "sim",
+        INTERLEAVED,
+        "--system",
+        "Async",
+        "--scenario",
+        &scn,
+        "--csv",
+    ]);
+    assert_eq!(code, 4, "{err}");
+    let rows: Vec<&str> = csv.lines().collect();
+    assert_eq!(
+        rows[0],
+        "tick,sched.active,a.active,b.active,sched.unit,a.x,b.i,b.y,events"
+    );
+    assert_eq!(rows[2], "1,Run,S,S,1,false,false,false,");
+    assert_eq!(rows[3], "2,Run,S,S,0,true,true,false,");
+    let _ = std::fs::remove_dir_all(&dir);
+}

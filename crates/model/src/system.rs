@@ -256,9 +256,14 @@ pub(crate) fn check_system(
             span: r.span,
         })
         .collect();
+    let interleaved = s
+        .interleaved
+        .then(|| interleaving(&instances, &order, s.observers.len()))
+        .flatten();
     System {
         name: s.name.name.clone(),
         implicit: false,
+        interleaved,
         instances,
         connections,
         order,
@@ -510,4 +515,39 @@ pub(crate) fn endpoint(
         }
     };
     Some(insts.into_iter().map(|i| (i, v)).collect())
+}
+
+/// The units of an interleaved system, numbered in execution order: each instance's
+/// [`crate::interleave::unit_key`]; the scheduler and the observers (the last `observers`
+/// instances) belong to none. `None` when the scheduler is missing (an error reported).
+fn interleaving(
+    instances: &[Instance],
+    order: &[u32],
+    observers: usize,
+) -> Option<crate::model::Interleaving> {
+    let scheduler = instances
+        .iter()
+        .position(|i| i.name == crate::interleave::SCHED)? as u32;
+    let first_observer = instances.len().saturating_sub(observers);
+    let mut unit = vec![None; instances.len()];
+    let mut units: Vec<String> = Vec::new();
+    for &i in order {
+        if i == scheduler || i as usize >= first_observer {
+            continue;
+        }
+        let key = crate::interleave::unit_key(&instances[i as usize].name);
+        let u = match units.iter().position(|k| k == key) {
+            Some(u) => u,
+            None => {
+                units.push(key.to_string());
+                units.len() - 1
+            }
+        };
+        unit[i as usize] = Some(u as u32);
+    }
+    Some(crate::model::Interleaving {
+        scheduler,
+        unit,
+        units,
+    })
 }

@@ -632,6 +632,10 @@ pub struct System {
     pub requirements: Vec<StateRequirement>,
     /// `configuration NAME { inst = Chart(args); … }`: named choices of charts and arguments.
     pub configurations: Vec<Configuration>,
+    /// `system NAME interleaved { … }`: one top-level instance steps per tick, chosen by the
+    /// implicit scheduler input `sched.unit` (`docs/components.md`); false for the
+    /// synchronous default (and for a component's body).
+    pub interleaved: bool,
     /// Whole system.
     pub span: Span,
 }

@@ -106,6 +106,7 @@ impl<'a, 'd> Flattener<'a, 'd> {
                 observers: Vec::new(),
                 requirements: Vec::new(),
                 configurations: Vec::new(),
+                interleaved: false,
                 span: Span::default(),
             },
         }
@@ -126,6 +127,7 @@ impl<'a, 'd> Flattener<'a, 'd> {
         out.observers = s.observers.clone();
         out.requirements = s.requirements.clone();
         out.configurations = s.configurations.clone();
+        out.interleaved = s.interleaved && comp.is_none();
         if comp.is_some() {
             out.observers.clear();
             out.requirements.clear();
@@ -179,6 +181,7 @@ impl<'a, 'd> Flattener<'a, 'd> {
             observers: Vec::new(),
             requirements: Vec::new(),
             configurations: Vec::new(),
+            interleaved: false,
             span: Span::default(),
         }
     }

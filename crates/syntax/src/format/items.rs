@@ -225,7 +225,10 @@ impl Printer<'_> {
     }
 
     fn system(&mut self, s: &System) {
-        let head = format!("system {}", s.name.name);
+        let mut head = format!("system {}", s.name.name);
+        if s.interleaved {
+            head.push_str(" interleaved");
+        }
         self.system_like(s, &head, &[]);
     }
 

@@ -208,6 +208,7 @@ impl Parser<'_> {
             observers: Vec::new(),
             requirements: Vec::new(),
             configurations: Vec::new(),
+            interleaved: false,
             span: start,
         };
         let mut ports = Vec::new();
