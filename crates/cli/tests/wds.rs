@@ -189,12 +189,12 @@ fn collision_is_95_ticks_after_the_heavy_workpiece_is_available() {
             "{key}"
         );
         let ticks = trace["ticks"].as_array().expect("ticks");
-        let taken = first_event(ticks, "tr.took", 0).expect("the first workpiece taken");
+        let taken = first_event(ticks, "s.tx.tr.took", 0).expect("the first workpiece taken");
         assert_eq!(taken, want["taken"].as_u64().expect("taken"), "{key}");
         let available = ticks
             .iter()
             .filter(|t| t["tick"].as_u64() > Some(taken))
-            .find(|t| t["vars"]["mag.present"] == true)
+            .find(|t| t["vars"]["s.st.mag.present"] == true)
             .and_then(|t| t["tick"].as_u64())
             .expect("the second workpiece available");
         assert_eq!(
@@ -205,9 +205,9 @@ fn collision_is_95_ticks_after_the_heavy_workpiece_is_available() {
         assert_eq!(collision - available, after, "{key}");
         // The heavy one: the workpiece the Feeder pushes when it enters its area.
         let last = ticks.last().expect("ticks");
-        assert_eq!(last["vars"]["f.wp"], "HEAVY", "{key}");
-        assert_eq!(last["vars"]["f.pos"], 95, "{key}");
-        assert!(last["vars"]["tr.pos"].as_u64() <= Some(5), "{key}");
+        assert_eq!(last["vars"]["s.st.f.wp"], "HEAVY", "{key}");
+        assert_eq!(last["vars"]["s.st.f.pos"], 95, "{key}");
+        assert!(last["vars"]["s.tx.tr.pos"].as_u64() <= Some(5), "{key}");
         let _ = std::fs::remove_dir_all(&dir);
     }
 }
