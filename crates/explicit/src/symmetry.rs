@@ -272,11 +272,14 @@ impl Canon {
             seed ^= seed << 17;
             seed
         };
+        if count == 0 {
+            return Ok(());
+        }
         let mut m = Machine::new(p);
         for _ in 0..runs {
             let mut state = Machine::new(p).state().to_vec();
             for _ in 0..len {
-                let v = vector(u128::from(next()) % count.max(1));
+                let v = vector(u128::from(next()) % count);
                 m.load(&state, &v);
                 let r = m.step().map(|_| m.state().to_vec());
                 for g in &gens {

@@ -127,3 +127,44 @@ fn a_property_naming_one_element_turns_symmetry_off() {
     assert!(!red.stats.symmetry);
     assert_eq!(red.stats.states, 1 + 27 * 2);
 }
+
+/// The guard against a wrong detection: a symmetry claimed by hand for a ring of elements
+/// that read each other in index order (tests/semantics/array_order.sc) is refuted on the
+/// step before the search, which then runs without it and says why. By hand: from (1, 2, 3)
+/// after tick 1 the ring steps to (4, 5, 6); with the first two elements exchanged, (2, 1, 3)
+/// steps to (4, 5, 6), not to the exchanged (5, 4, 6).
+#[test]
+fn a_wrongly_claimed_symmetry_is_refuted_on_the_step() {
+    let text = "chart C {\n  input i: int[0..9] = 0;\n  output o: int[0..9] = 0;\n  initial S;\n  state S { during { o = min(i + 1, 9); } }\n}\nsystem Sys {\n  instance a[3]: C;\n  connect a[0].o -> a[1].i;\n  connect a[1].o -> a[2].i;\n  connect a[2].o -> a[0].i;\n  invariant small: a[0].o + a[1].o + a[2].o < 30;\n}\n";
+    let (model, p) = program(text);
+    let d = detect(model.system("Sys").expect("Sys"), &p);
+    assert!(d.symmetry.groups.is_empty());
+    assert!(d.diagnostics.iter().any(|d| d.code == "W0316"));
+    let slot = |k: usize| {
+        p.slots
+            .iter()
+            .position(|s| s.name == format!("a[{k}].o"))
+            .expect("slot") as u32
+    };
+    let claimed = statecheck_ir::symmetry::Symmetry {
+        groups: vec![statecheck_ir::symmetry::Group {
+            array: "a".into(),
+            blocks: (0..3).map(|k| vec![slot(k)]).collect(),
+            inputs: vec![Vec::new(); 3],
+            families: Vec::new(),
+        }],
+    };
+    let r = verify(
+        &p,
+        &Options {
+            threads: 1,
+            symmetry: Some(Arc::new(claimed)),
+            ..Options::default()
+        },
+        None,
+    )
+    .expect("runs");
+    assert!(!r.stats.symmetry);
+    let note = r.stats.symmetry_note.unwrap_or_default();
+    assert!(note.contains("does not treat the elements alike"), "{note}");
+}

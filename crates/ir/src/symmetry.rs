@@ -288,13 +288,17 @@ fn array(sys: &System, p: &Program, name: &str, elems: &[u32]) -> (Option<Group>
             .collect()
     };
     let ishape = |b: &[((u8, u32), usize)]| -> Vec<(u8, u32)> { b.iter().map(|x| x.0).collect() };
-    if blocks.iter().any(|b| shape(b) != shape(&blocks[0]))
+    let chart = sys.instances[elems[0] as usize].chart;
+    if elems
+        .iter()
+        .any(|&e| sys.instances[e as usize].chart != chart)
+        || blocks.iter().any(|b| shape(b) != shape(&blocks[0]))
         || inputs.iter().any(|b| ishape(b) != ishape(&inputs[0]))
     {
         diags.push(warn(
             "W0318",
             name,
-            "elements whose state slots do not correspond".into(),
+            "elements of different charts, or whose state slots do not correspond".into(),
             sys.instances[elems[0] as usize].span,
             "the elements differ in their slots (ranges or initial values): they are not interchangeable",
         ));
