@@ -167,3 +167,14 @@ plant chart Mover {
 ";
     assert_eq!(errors(src), vec![("E0181", 9)]);
 }
+
+#[test]
+fn a_parameterised_chart_named_like_an_earlier_chart_is_a_duplicate_not_a_panic() {
+    // Found by the `check` fuzz target: the second `A` has a parameter, the first has none;
+    // the parameter expansion looked the second up in the first's (absent) signature and
+    // panicked. It is one error: E0102, the duplicate name, at the second declaration.
+    let src = "chart A { initial S; state S; }
+chart A(k: int[0..3]) { initial S; state S; }
+";
+    assert_eq!(errors(src), vec![("E0102", 2)]);
+}
