@@ -154,7 +154,19 @@ pub(crate) fn expand(file: &ast::File, ck: &mut ExprChecker<'_>) -> Option<Expan
     for item in &file.items {
         match item {
             ast::Item::Chart(c) if !c.params.is_empty() => {
-                let sig = &sigs[c.name.name.as_str()];
+                let first = charts
+                    .get(c.name.name.as_str())
+                    .is_some_and(|f| std::ptr::eq(*f, c));
+                let sig = match sigs.get(c.name.name.as_str()) {
+                    Some(sig) if first => sig.clone(),
+                    // A second chart of the same name (E0102, reported later) whose first has
+                    // no parameters or others: its own placeholders, no defaults evaluated.
+                    _ => c
+                        .params
+                        .iter()
+                        .map(|p| (ck.resolve_type(&p.ty), None))
+                        .collect(),
+                };
                 let defaults: Option<Vec<Value>> = sig.iter().map(|(_, d)| *d).collect();
                 let (plain, origin) = match defaults {
                     Some(d) => (d, Origin::Defaults),
@@ -172,7 +184,12 @@ pub(crate) fn expand(file: &ast::File, ck: &mut ExprChecker<'_>) -> Option<Expan
                     ck,
                 )));
                 origins.push(origin);
-                for (values, at) in uses.get(c.name.name.as_str()).into_iter().flatten() {
+                let uses_here = if first {
+                    uses.get(c.name.name.as_str())
+                } else {
+                    None
+                };
+                for (values, at) in uses_here.into_iter().flatten() {
                     let name = copy_name(c, values, ck);
                     out.items
                         .push(ast::Item::Chart(specialise(c, values, name, ck)));
