@@ -117,3 +117,22 @@ fn generated_models_with_parameters_and_time_units_are_accepted() {
         "{params} {times} {checked}"
     );
 }
+
+#[test]
+fn inputs_that_once_failed_pass_their_target() {
+    // crates/fuzz/corpus/check/ holds inputs the `check` target once failed on (found by
+    // `scripts/fuzz.sh targets`): a panic in the parameter expansion and an E0181 hint that
+    // looped ~10^18 times. Each now runs through the target without a failure (they are also
+    // seeds of every run).
+    let dir = root().join("crates/fuzz/corpus/check");
+    let mut n = 0;
+    for e in std::fs::read_dir(&dir).expect("corpus dir") {
+        let path = e.expect("entry").path();
+        let bytes = std::fs::read(&path).expect("read");
+        let ctx = targets::Context::default();
+        let r = runner::execute(Target::Check, &ctx, 0, &bytes);
+        assert!(r.is_ok(), "{}: {r:?}", path.display());
+        n += 1;
+    }
+    assert!(n >= 2, "{n} saved inputs");
+}
