@@ -287,6 +287,9 @@ fn describe(profile: &[(Ratio, Option<Ratio>)]) -> String {
     }
 }
 
+/// Candidate tick lengths [`tick_hint`] tries on each side of the given one.
+const HINT_BUDGET: i128 = 100_000;
+
 /// The tick lengths nearest to `tick` that divide every clock reading, as a hint.
 fn tick_hint(times: &[Ratio], tick: Ratio) -> String {
     let Some(g) = times
@@ -311,8 +314,13 @@ fn tick_hint(times: &[Ratio], tick: Ratio) -> String {
         .map(|r| r.num() / r.den())
         .unwrap_or(1)
         .max(1);
-    let below = (q + 1..q + 100_000).find_map(whole);
-    let above = (1..=q).rev().find_map(whole);
+    // At most HINT_BUDGET candidates on each side: a slow motion makes `q` astronomical
+    // (a rate of 20/2^31 per second with 1.25 s ticks gives q = 4.3e8) and a hint must not
+    // cost more than the check.
+    let below = (q.saturating_add(1)..q.saturating_add(HINT_BUDGET)).find_map(whole);
+    let above = (q.saturating_sub(HINT_BUDGET).max(1)..=q)
+        .rev()
+        .find_map(whole);
     let fmt = |t: Ratio| match ms(t) {
         Some(m) => format!("{m} ms"),
         None => format!("{t} s"),
