@@ -20,3 +20,40 @@ system Named {
   instance a[3]: Counter;
   invariant first: a[0].c != 1;
 }
+
+// Workers started together by a broadcast event, each stopped by its own free `kick` or after
+// 3 ticks: timers, entry/exit actions and a bounded `respond` per element (its monitor moves
+// with its element). Symmetric; checked against the search without symmetry.
+chart Env {
+  input event start;
+  output event go;
+  output n: int[0..3] = 0;
+  initial S;
+  state S { on start / { raise go; n = (n + 1) % 4; }; }
+}
+
+chart Worker {
+  input event go;
+  input event kick;
+  output busy: bool = false;
+  local t: int[0..5] = 0;
+  initial Idle;
+  state Idle { on go -> Busy; }
+  state Busy {
+    entry { busy = true; t = 0; }
+    exit { busy = false; }
+    during { t = min(t + 1, 5); }
+    on kick -> Idle;
+    on after(3) -> Idle;
+  }
+  respond done: busy => !busy within 2;
+  invariant short: t < 3;
+  reachable long: t == 3;
+}
+
+system Workers {
+  instance env: Env;
+  instance w[3]: Worker;
+  connect env.go -> w[*].go;
+  invariant env_ok: env.n < 3;
+}

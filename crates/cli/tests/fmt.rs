@@ -45,11 +45,16 @@ fn erase_spans(s: &str) -> String {
     out
 }
 
-/// What the checker and the lowering make of a text, positions aside: the diagnostics
-/// (code, severity, message) and each system's lowered program or lowering diagnostics.
-fn meaning(src: &str) -> (Vec<String>, Vec<String>) {
-    let (file, mut diags) = statecheck_syntax::parse(src);
-    let (model, more) = statecheck_model::check(&file);
+/// What the checker and the lowering make of a text read as the file `path` (its imports
+/// followed), positions aside: the diagnostics (code, severity, message) and each system's
+/// lowered program or lowering diagnostics.
+fn meaning(path: &Path, src: &str) -> (Vec<String>, Vec<String>) {
+    let program =
+        statecheck_model::imports::load_with(&path.to_string_lossy(), src.to_string(), |k| {
+            std::fs::read_to_string(k).ok()
+        });
+    let mut diags = program.diags;
+    let (model, more) = statecheck_model::check(&program.file);
     diags.extend(more);
     let mut d: Vec<String> = diags
         .iter()
@@ -83,8 +88,8 @@ fn formatting_every_repository_model_keeps_its_diagnostics_and_its_ir() {
         let Ok(formatted) = statecheck_syntax::format::format(&src) else {
             continue; // syntax-error tests; crates/syntax/tests/format.rs checks they are all
         };
-        let (d0, p0) = meaning(&src);
-        let (d1, p1) = meaning(&formatted);
+        let (d0, p0) = meaning(path, &src);
+        let (d1, p1) = meaning(path, &formatted);
         assert_eq!(d0, d1, "{}: diagnostics changed", path.display());
         assert_eq!(p0.len(), p1.len(), "{}", path.display());
         for (a, b) in p0.iter().zip(&p1) {

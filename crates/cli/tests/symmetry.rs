@@ -91,6 +91,43 @@ fn symmetry_stores_orbits_and_its_counterexamples_replay() {
 }
 
 #[test]
+fn workers_with_timers_and_monitors_keep_their_verdicts() {
+    let (full, _) = verify("Workers", &["--no-symmetry"]);
+    let dir = std::env::temp_dir().join(format!("statecheck-symmetry-w-{}", std::process::id()));
+    let d = dir.to_string_lossy().into_owned();
+    let (red, _) = verify("Workers", &["--symmetry", "--cex-dir", &d]);
+    assert_eq!(red["stats"]["symmetry"], true);
+    assert!(red["stats"]["states"].as_u64() < full["stats"]["states"].as_u64());
+    let rows = |v: &serde_json::Value| -> Vec<String> {
+        let mut r: Vec<String> = v["results"]
+            .as_array()
+            .expect("results")
+            .iter()
+            .map(|r| format!("{} {} {}", r["property"], r["verdict"], r["depth"]))
+            .collect();
+        r.sort();
+        r
+    };
+    assert_eq!(rows(&full), rows(&red));
+    for i in 0..3 {
+        let scn = dir.join(format!("w_{i}__done.scn"));
+        let out = statecheck(&[
+            "sim",
+            "tests/verify/symmetry.sc",
+            "--system",
+            "Workers",
+            "--scenario",
+            &scn.to_string_lossy(),
+            "-q",
+        ]);
+        assert_eq!(out.status.code(), Some(4), "w[{i}].done");
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert!(err.contains(&format!("`w[{i}].done` violated")), "{err}");
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
 fn a_property_naming_one_element_is_diagnosed() {
     let (v, err) = verify("Named", &["--symmetry"]);
     assert!(err.contains("W0317") && err.contains("`first`"), "{err}");

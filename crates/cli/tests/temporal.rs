@@ -446,12 +446,11 @@ fn fam_liveness_lassos_replay() {
     }
     let dir = std::env::temp_dir().join(format!("statecheck-famlasso-{}", std::process::id()));
     std::fs::create_dir_all(dir.join("liveness")).expect("dir");
-    std::fs::copy(
-        format!("{root}/examples/fam/fam_system.sc"),
-        dir.join("fam_system.sc"),
-    )
-    .expect("copy");
-    let src = std::fs::read_to_string(&live).expect("model");
+    // The copy imports the closed loop (and through it examples/fam/lib/) where it is.
+    let src = std::fs::read_to_string(&live).expect("model").replace(
+        "import \"../fam_system.sc\";",
+        &format!("import \"{root}/examples/fam/fam_system.sc\";"),
+    );
     let a = src
         .find("  ltl stall_procedure_completes:")
         .expect("first property");

@@ -11,7 +11,10 @@
 //! The enumeration is a depth-first search over segments (from one choice point to the next)
 //! that stores each segment once, so memory grows with the ticks simulated, which are bounded
 //! ([`Limits`]). Two segments that end at the same tick in the same state after the same
-//! recorded history have the same futures and the same report: the second is not explored again. A
+//! recorded history have the same futures and the same report: the second is not explored
+//! again. (States and histories are compared by 64-bit hashes, so that memory per segment does
+//! not grow with the state; a collision, which would merge two sequences, has a probability
+//! around n²/2⁶⁵ for n segments.) A
 //! choice that changes nothing (the system stays at rest) is not a new sequence.
 
 use crate::run::{tick_once, unreached, Stop};
@@ -158,6 +161,12 @@ fn valuations(program: &Program, max: usize) -> Result<Vec<Vec<i64>>, u128> {
     Ok(out)
 }
 
+fn hash_of(state: &[i64]) -> u64 {
+    let mut h = std::collections::hash_map::DefaultHasher::new();
+    state.hash(&mut h);
+    h.finish()
+}
+
 /// The history after a segment: everything a report reads of it (the recorded slots and the
 /// violations) hashed onto the history before it.
 fn mix(history: u64, rows: &[Vec<i64>], violations: &[(u64, String)]) -> u64 {
@@ -218,7 +227,9 @@ pub fn enumerate(
     root.state = m.state().to_vec();
     let mut segs = vec![root];
     let mut stack = vec![0usize];
-    let mut seen: HashSet<(u64, Vec<i64>, u64)> = HashSet::new();
+    // (tick, history, state) of every segment explored, the state by its hash: memory per
+    // segment stays constant whatever the size of the state.
+    let mut seen: HashSet<(u64, u64, u64)> = HashSet::new();
     let mut runs = Vec::new();
     let mut total: u64 = 1;
     let mut truncated = None;
@@ -321,7 +332,7 @@ pub fn enumerate(
             seg.state = m.state().to_vec();
             seg.tick = t;
             seg.history = mix(history, &seg.rows, &seg.violations);
-            if !seen.insert((seg.tick, seg.state.clone(), seg.history)) {
+            if !seen.insert((seg.tick, seg.history, hash_of(&seg.state))) {
                 continue;
             }
             children.push(seg);
@@ -335,6 +346,8 @@ pub fn enumerate(
             stack.push(at);
             continue;
         }
+        // Only segments still to expand keep their state.
+        segs[at].state = Vec::new();
         // Depth-first, first valuation first: push in reverse.
         let first = segs.len();
         segs.extend(children);

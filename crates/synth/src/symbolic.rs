@@ -152,7 +152,12 @@ impl<'p> Ctx<'p> {
 
     /// Successors of `s` by `e` (allowed by the requirements).
     fn post(&self, e: EventId, s: &Bdd) -> Bdd {
-        let mut r = s.and(&self.en[e as usize]);
+        self.post_where(e, s, &self.en[e as usize])
+    }
+
+    /// Successors of the states of `s ∧ from` by `e` (`from` includes `e`'s enabling).
+    fn post_where(&self, e: EventId, s: &Bdd, from: &Bdd) -> Bdd {
+        let mut r = s.and(from);
         for steps in &self.moves[e as usize] {
             if r.is_false() {
                 return r;
@@ -237,6 +242,9 @@ pub fn run_ordered(p: &Problem, budget: &Budget, order: &[usize]) -> Result<Symb
     }
     let init = cx.enc.state(&p.initial());
     let valid = cx.enc.valid();
+    // Where each event is expanded during reachability: enabled, not in a `never` state
+    // (computed once, not once per image).
+    let expand: Vec<Bdd> = cx.en.iter().map(|en| en.and_not(&never)).collect();
     // The reachable product: `never` states are reached but not expanded (as in the
     // explicit engine, whose count this is).
     let product = closure(
@@ -245,7 +253,7 @@ pub fn run_ordered(p: &Problem, budget: &Budget, order: &[usize]) -> Result<Symb
         &valid,
         budget,
         "reachability",
-        |e, s| cx.post(e, &s.and_not(&never)),
+        |e, s| cx.post_where(e, s, &expand[e as usize]),
     )?;
     let mut good = product.and_not(&bad);
     let mut rounds = 0;
