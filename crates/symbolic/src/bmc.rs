@@ -117,3 +117,61 @@ pub fn bmc_many(
         k += 1;
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::aig::Lit;
+
+    /// A one-hot shift register of six latches: latch `i` holds in frame `i` only (latch 0 is
+    /// reset true, every next latch copies the previous one, latch 0 becomes false). Bad
+    /// outputs: latch 5, latch 2, and latches 0 and 1 together (never: one-hot).
+    fn chain() -> Aig {
+        let mut g = Aig::new();
+        let l: Vec<Lit> = (0..6)
+            .map(|i| g.latch(Some(i == 0), Some(format!("l{i}"))))
+            .collect();
+        g.set_next(0, Lit::FALSE);
+        for i in 1..6 {
+            g.set_next(i, l[i - 1]);
+        }
+        let both = g.and(l[0], l[1]);
+        g.bad = vec![l[5], l[2], both];
+        g.bad_names = vec![None; 3];
+        g
+    }
+
+    #[test]
+    fn one_unrolling_finds_each_output_at_its_own_shortest_depth() {
+        let g = chain();
+        let lim = Limits {
+            max_depth: Some(10),
+            ..Limits::default()
+        };
+        let mut got = Vec::new();
+        let end = bmc_many(&g, &lim, &|_| true, &|_| None, &mut |j, t| {
+            got.push((j, t.inputs.len()))
+        });
+        // By hand: latch 2 holds in frame 2 (a 3-frame trace), latch 5 in frame 5 (6 frames),
+        // found in depth order; the third output is never reached, so the search ends at the
+        // depth bound.
+        assert_eq!(got, vec![(1, 3), (0, 6)]);
+        assert_eq!(end, ManyEnd::Bounded(10));
+    }
+
+    #[test]
+    fn outputs_no_longer_open_are_not_asked() {
+        let g = chain();
+        let mut got = Vec::new();
+        // Only output 1 is wanted: once found, nothing is open and the search ends.
+        let end = bmc_many(
+            &g,
+            &Limits::default(),
+            &|j| j == 1,
+            &|_| None,
+            &mut |j, t| got.push((j, t.inputs.len())),
+        );
+        assert_eq!(got, vec![(1, 3)]);
+        assert_eq!(end, ManyEnd::Done);
+    }
+}
