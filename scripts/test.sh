@@ -3,7 +3,8 @@
 # spin for Promela, berkeley-abc for AIGER, chromium for the studio's browser tests, graphviz
 # for `dot --svg`) and the
 # studio's end-to-end driver (playwright-core, npm, pinned in crates/studio/e2e/package.json),
-# then runs the whole test suite in release mode.
+# then runs the whole test suite optimised (the `ci` profile of Cargo.toml: release without LTO,
+# which builds the many test binaries much faster).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 need=()
@@ -21,4 +22,4 @@ fi
 if command -v npm >/dev/null && [ ! -d crates/studio/e2e/node_modules/playwright-core ]; then
   (cd crates/studio/e2e && npm ci --no-audit --no-fund --silent)
 fi
-exec cargo test --workspace --release "$@"
+exec cargo test --workspace --profile ci "$@"

@@ -2,10 +2,11 @@
 # Regenerates docs/case-studies/wds.md from a real run (issue 18): the WDS configuration matrix
 # {faulty, correct Storage} x {L-, D-Transfer} x {Sensor, Sensor_with_Fault} with verdicts and
 # times of the explicit engine, of `auto` and of a SAT engine (BMC on the collision of the
-# faulty configurations, IC3 on the correct ones), the forced orderings, and the collision
-# counterexample replayed with `sim`. Figures, not a timed test.
+# faulty configurations, IC3 and k-induction on the correct ones), the forced orderings (explicit,
+# BMC, IC3, k-induction), the collision counterexample replayed with `sim` and `analyse`.
+# Figures, not a timed test.
 # Usage: scripts/wds_case_study.sh [OUT]   (default docs/case-studies/wds.md)
-#        SAT_TIMEOUT=S (default 120): the most a SAT engine gets per configuration.
+#        SAT_TIMEOUT=S (default 30): the most a SAT engine gets per configuration.
 set -eu
 ROOT=$(cd "$(dirname "$0")/.." && pwd)
 OUT=${1:-$ROOT/docs/case-studies/wds.md}
@@ -20,7 +21,7 @@ fi
 TMP=$(mktemp -d "${TMPDIR:-/tmp}/statecheck-wds.XXXXXX")
 trap 'rm -rf "$TMP"' EXIT
 cd "$ROOT"
-python3 - "$SC" "$TMP" "$OUT" "${SAT_TIMEOUT:-120}" <<'PY'
+python3 - "$SC" "$TMP" "$OUT" "${SAT_TIMEOUT:-30}" <<'PY'
 import json, os, subprocess, sys, time
 
 sc, tmp, out, sat_timeout = sys.argv[1], sys.argv[2], sys.argv[3], sys.argv[4]
@@ -75,34 +76,42 @@ emit("")
 
 emit("## Engines")
 emit("")
-emit("Per configuration: `auto` (the default portfolio, every property), the explicit engine")
-emit("alone on `no_collision`, and a SAT engine alone on `no_collision`: BMC (`--depth 170`)")
-emit("where the collision exists, IC3 where it does not, each given at most "
-     f"{sat_timeout} s (`--timeout`).")
+emit("Per configuration of the full model: `auto` (the default portfolio, every property), the")
+emit("explicit engine alone on `no_collision`, and SAT engines alone on `no_collision`: BMC")
+emit("(`--depth 170`) where the collision exists, IC3 and k-induction where it does not, each")
+emit(f"given at most {sat_timeout} s (`--timeout`).")
 emit("")
-emit("| configuration | auto: all properties | explicit: no_collision | SAT engine | SAT: no_collision |")
-emit("|---|---|---|---|---|")
+emit("| configuration | auto: all properties | explicit: no_collision | SAT: no_collision |")
+emit("|---|---|---|---|")
+
+
+def sat_cell(file, name, engine, extra):
+    _, sat, wall = run_json(["verify", file, "--config", name, "--engine", engine,
+                             "--property", "no_collision", "--timeout", sat_timeout,
+                             "--json"] + extra)
+    r = sat["results"][0]
+    return f"{engine}: {r['verdict']} (depth {r.get('depth', '-')}), {wall:.2f} s"
+
+
 for c in cfgs:
     name = c["configuration"]
     _, _, auto_wall = run(["verify", W, "--config", name])
     _, ex, ex_wall = run_json(["verify", W, "--config", name, "--engine", "explicit",
                                "--property", "no_collision", "--json"])
     er = ex["results"][0]
-    faulty = name.startswith("faulty")
-    engine = "bmc" if faulty else "ic3"
-    extra = ["--depth", "170"] if faulty else []
-    _, sat, sat_wall = run_json(["verify", W, "--config", name, "--engine", engine,
-                                 "--property", "no_collision", "--timeout", sat_timeout,
-                                 "--json"] + extra)
-    sr = sat["results"][0]
+    if name.startswith("faulty"):
+        sats = [sat_cell(W, name, "bmc", ["--depth", "170"])]
+    else:
+        sats = [sat_cell(W, name, "ic3", []), sat_cell(W, name, "kind", [])]
     emit(f"| `{name}` | {auto_wall:.2f} s | {er['verdict']} (depth {er['depth']}), {ex_wall:.2f} s"
-         f" | {engine} | {sr['verdict']} (depth {sr.get('depth', '-')}), {sat_wall:.2f} s |")
+         f" | {'; '.join(sats)} |")
 emit("")
-emit("The explicit engine explores each configuration completely in a fraction of a second")
-emit("(a few thousand states), so `auto` decides every row with it. The SAT engines work on the")
-emit("bit-blasted step with every input free: BMC must unroll the 161 (L) or 165 (D) ticks of the")
-emit("shortest collision, and IC3 must find an inductive invariant that relates both axes'")
-emit("positions and timers; a verdict `unknown` above means the SAT engine ran out of its time.")
+emit("The explicit engine explores each configuration completely (a few thousand states), so")
+emit("`auto` decides every row with it. The SAT engines work on the bit-blasted step with every")
+emit("input free (START, the workpiece types, the sensor fault): BMC must unroll the 161 (L) or")
+emit("165 (D) ticks of the shortest collision, and IC3 and k-induction must relate both axes'")
+emit("positions, modes and timers; `unknown` means the engine ran out of its time. The orderings")
+emit("below pin the inputs, and there the SAT engines do decide.")
 emit("")
 
 _, ords, _ = run_json(["verify", O, "--all-configs", "--engine", "explicit",
@@ -111,21 +120,23 @@ emit("## Which orderings collide")
 emit("")
 emit("`statecheck verify examples/wds/orderings.sc --all-configs`: the faulty controller with a")
 emit("magazine of exactly two workpieces of the named types (first, second), START pinned, so")
-emit("each configuration is a single run. The explicit engine's verdict and depth, and BMC to one")
-emit("tick past that depth (the whole run: BMC agrees when it finds the same collision or none).")
+emit("each configuration is a single run. The explicit engine's verdict and depth; BMC to one")
+emit("tick past that depth (the whole run: BMC agrees when it finds the same collision or none);")
+emit(f"IC3 and k-induction, each given at most {sat_timeout} s.")
 emit("")
-emit("| configuration | explicit | BMC |")
-emit("|---|---|---|")
+emit("| configuration | explicit | BMC | IC3 | k-induction |")
+emit("|---|---|---|---|---|")
 for c in ords["configurations"]:
     name = c["configuration"]
     r = c["results"][0]
-    _, b, bwall = run_json(["verify", O, "--config", name, "--engine", "bmc", "--depth",
-                            str(r["depth"] + 1), "--property", "no_collision", "--json"])
-    br = b["results"][0]
-    emit(f"| `{name}` | {r['verdict']} (depth {r['depth']}), {c['time_s']:.3f} s"
-         f" | {br['verdict']} (depth {br['depth']}), {bwall:.2f} s |")
+    cells = [sat_cell(O, name, "bmc", ["--depth", str(r["depth"] + 1)]),
+             sat_cell(O, name, "ic3", []), sat_cell(O, name, "kind", [])]
+    cells = [x.split(": ", 1)[1] for x in cells]
+    emit(f"| `{name}` | {r['verdict']} (depth {r['depth']}), {c['time_s']:.3f} s | "
+         + " | ".join(cells) + " |")
 emit("")
-emit("Only light-then-heavy (`lh_*`) collides, as derived by hand.")
+emit("Only light-then-heavy (`lh_*`) collides, as derived by hand: asked for a collision with")
+emit("each other ordering forced, no engine finds one.")
 emit("")
 
 cex = os.path.join(tmp, "cex")
@@ -146,26 +157,36 @@ emit("$ statecheck sim examples/wds/wds.sc --config faulty_L_sensor --scenario c
 emit(f"(exit code {code}: {trace['result']['message']})")
 emit("```")
 emit("")
-emit("The replay's key ticks (from `sim --json`; time = tick × 1.25 s):")
+emit("The replay's key ticks (from `sim --json`; time = tick × 1.25 s): every tick with an")
+emit("event, and every tick where a workpiece, ALLOW_RIGHT, the presence sensor, a motion state")
+emit("or a collision area changes. `f` is `s.st.f` (the Feeder), `tr` is `s.tx.tr` (the drive),")
+emit("`stc` the Storage controller, `mag` the magazine.")
 emit("")
-emit("| tick | time | Feeder pos | Feeder wp | Transfer pos | Transfer wp | ALLOW_RIGHT | presence | events |")
-emit("|---|---|---|---|---|---|---|---|---|")
+emit("| tick | time | Feeder pos | Feeder state | Feeder wp | Transfer pos | Transfer state | Transfer wp | ALLOW_RIGHT | presence | events |")
+emit("|---|---|---|---|---|---|---|---|---|---|---|")
+F, T = "s.st.f.", "s.tx.tr."
 prev = None
 avail = None
 for t in ticks:
     v = t["vars"]
-    ev = [e for e in t["events"] if e in ("pn.start", "tr.took", "tr.released", "tc.taken")]
+    states = t.get("active", {})
+    fst = states.get("s.st.f", "")
+    tst = states.get("s.tx.tr", "")
+    if isinstance(fst, list):
+        fst = ",".join(fst)
+    if isinstance(tst, list):
+        tst = ",".join(x.split(".", 1)[1] for x in tst if x.startswith("motion."))
+    ev = list(t["events"])
     key = prev is None or ev or t is ticks[-1] or any(
-        v[k] != prev[k] for k in ("f.wp", "tr.wp", "stc.allow_right", "mag.present")) or (
-        (prev["tr.pos"] > 5) != (v["tr.pos"] > 5)) or ((prev["f.pos"] < 95) != (v["f.pos"] < 95)) or (
-        v["f.pos"] in (0, 100) and prev["f.pos"] != v["f.pos"]) or (
-        v["tr.pos"] in (0, 100) and prev["tr.pos"] != v["tr.pos"])
-    if prev is not None and v["mag.present"] and not prev["mag.present"] and t["tick"] > 1:
+        v[k] != prev[0][k] for k in (F + "wp", T + "wp", "s.st.stc.allow_right", "s.st.mag.present")) or (
+        (prev[0][T + "pos"] > 5) != (v[T + "pos"] > 5)) or ((prev[0][F + "pos"] < 95) != (v[F + "pos"] < 95)) or (
+        fst != prev[1] or tst != prev[2])
+    if prev is not None and v["s.st.mag.present"] and not prev[0]["s.st.mag.present"] and t["tick"] > 1:
         avail = t["tick"]
     if key:
-        emit(f"| {t['tick']} | {t['tick'] * 1.25:.2f} s | {v['f.pos']} | {v['f.wp']} | {v['tr.pos']}"
-             f" | {v['tr.wp']} | {v['stc.allow_right']} | {v['mag.present']} | {' '.join(ev)} |")
-    prev = v
+        emit(f"| {t['tick']} | {t['tick'] * 1.25:.2f} s | {v[F + 'pos']} | {fst} | {v[F + 'wp']} | {v[T + 'pos']}"
+             f" | {tst} | {v[T + 'wp']} | {v['s.st.stc.allow_right']} | {v['s.st.mag.present']} | {' '.join(ev)} |")
+    prev = (v, fst, tst)
 last = ticks[-1]["tick"]
 emit("")
 emit(f"The heavy workpiece becomes available in tick {avail} ({avail * 1.25:.2f} s); the Feeder")
@@ -173,11 +194,52 @@ emit(f"enters its collision area with it in tick {last} ({last * 1.25:.2f} s), *
 emit(f"{(last - avail) * 1.25:.2f} s after it became available** (the paper's 118.75 s), while the")
 emit("Transfer, back at the Storage early, waits in its own area.")
 emit("")
+code, an_text, _ = run(["analyse", W, "--system", "WDS:faulty_L_sensor", "--scenario", scn])
+_, an_json, _ = run_json(["analyse", W, "--system", "WDS:faulty_L_sensor", "--scenario", scn,
+                          "--json"])
+_, rd_text, _ = run(["analyse", "examples/wds/feeder.sc"])
+emit("## The continuous motion along the collision (`statecheck analyse`)")
+emit("")
+emit("`statecheck analyse` follows the same run with the continuous motion computed exactly")
+emit("(rationals, no grid) and lists when each critical point is reached, with the tick at")
+emit("which the discretized model reached it:")
+emit("")
+emit("```text")
+emit("$ statecheck analyse examples/wds/wds.sc --system WDS:faulty_L_sensor --scenario cex/no_collision.scn")
+for l in an_text.splitlines():
+    emit(l)
+emit("```")
+emit("")
+push = None
+enter = None
+for e in an_json.get("events", []):
+    if e["instance"] == "s.st.f" and e["state"] == "PushingHeavy" and e["point"] == 95:
+        enter = e
+if enter is not None and avail is not None:
+    emit(f"The Feeder enters its collision area (95 %) pushing the heavy workpiece at exactly")
+    emit(f"{enter['seconds']} s (tick {enter['ticks']}, the model's tick {enter['model_tick']}:"
+         f" {enter['status']}); it started pushing it in tick {avail} = {avail * 1.25:.2f} s, so the")
+    emit(f"entry is **{float(enter['seconds']) - avail * 1.25:.2f} s after the heavy workpiece became available**.")
+    emit("The clock readings of the Feeder alone say the same directly (`PushingHeavy (from 0)`,")
+    emit("point 95: 118.75 s, 95 ticks):")
+emit("")
+emit("```text")
+emit("$ statecheck analyse examples/wds/feeder.sc")
+for l in rd_text.splitlines():
+    emit(l)
+emit("```")
+emit("")
+emit("`statecheck show --discretized examples/wds/wds.sc` prints the discretized program that")
+emit("every engine verifies (the grid, the mode and timer variables, the generated `during`).")
+emit("")
+
 emit("**In the studio.** `statecheck serve examples/wds/wds.sc --system WDS:faulty_L_sensor --open`")
-emit("opens this configuration's closed loop (imports followed); *Load .scn* with")
-emit("`cex/no_collision.scn` replays the counterexample to the violating tick, marked, with the")
-emit("charts animated and `f.pos`/`tr.pos` as waveforms; or *Verify* on the page and click the")
-emit("`no_collision` row (docs/studio.md). *Back* then continues from any tick of it.")
+emit("opens this configuration's closed loop (imports and composites followed, instances by")
+emit("path); *Load .scn* with `examples/wds/collision_faulty_L.scn` (this counterexample, checked")
+emit("in) replays it to the violating tick 160 (200.00 s), marked, with the charts animated and")
+emit("`s.st.f.pos`/`s.tx.tr.pos` as waveforms; or *Verify* on the page and click the")
+emit("`no_collision` row (docs/studio.md). `crates/studio/tests/wds.rs` loads that file through")
+emit("the studio's protocol and checks the stop at tick 160, 200 s.")
 emit("")
 open(out, "w").write("\n".join(lines))
 print(f"wrote {out}")

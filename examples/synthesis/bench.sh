@@ -4,7 +4,8 @@
 # (default 60); CPU seconds, peak memory and sizes per run, and the reference implementation
 # (reference.py, an independent textbook implementation) beside the explicit engine on the
 # philosophers. Supervisors written with -o are re-read and checked with `verify --plant` up
-# to VERIFY_MAX supervisor states (default 100000).
+# to VERIFY_MAX supervisor states (default 100000). Then the (n, k) families TL, DP, CM, AT,
+# BW, TA (docs/synthesis.md, "Benchmark families"), both engines, n grown.
 # Usage: examples/synthesis/bench.sh [path/to/statecheck]   (default: a release build)
 set -u
 cd "$(dirname "$0")/../.."
@@ -57,6 +58,11 @@ run() {
     return 0
 }
 
+# SECTIONS: which parts to run (default all): fixed, grown (philosophers and line), families.
+SECTIONS=${SECTIONS:-fixed grown families}
+echo "load average: $(cut -d' ' -f1-3 /proc/loadavg 2>/dev/null)"
+
+if [[ " $SECTIONS " == *" fixed "* ]]; then
 echo "== fixed examples"
 for spec in "small_factory.sc SmallFactory" "small_factory.sc SmallFactoryRepair" "cat_mouse.sc" \
             "transfer_line.sc" "philosophers_5.sc" "line_4.sc" "line_12.sc"; do
@@ -67,6 +73,9 @@ for spec in "small_factory.sc SmallFactory" "small_factory.sc SmallFactoryRepair
     done
 done
 
+fi
+
+if [[ " $SECTIONS " == *" grown "* ]]; then
 for family in philosophers line; do
     echo "== $family family (grown until an engine needs ${LIMIT} s)"
     alive_explicit=1 alive_symbolic=1 alive_reference=1
@@ -95,3 +104,27 @@ for family in philosophers line; do
         n=$((n + 1))
     done
 done
+fi
+
+# The (n, k) families of crates/synth/src/families/scaled.rs: k fixed per family (K_TL=…
+# overrides), n grown from 2 until both engines need LIMIT seconds or n reaches MAXN.
+if [[ " $SECTIONS " == *" families "* ]]; then
+MAXN=${MAXN:-12}
+for fk in "tl ${K_TL:-3}" "dp ${K_DP:-2}" "cm ${K_CM:-2}" "at ${K_AT:-3}" "bw ${K_BW:-3}" "ta ${K_TA:-3}"; do
+    set -- $fk
+    family=$1 k=$2
+    echo "== $family family, k = $k (n grown until both engines need ${LIMIT} s)"
+    alive_explicit=1 alive_symbolic=1
+    n=2
+    while { [ $alive_explicit = 1 ] || [ $alive_symbolic = 1 ]; } && [ "$n" -le "$MAXN" ]; do
+        f=$TMP/${family}_${n}_$k.sc
+        "$GEN" "$family" "$n" "$k" "$f" || break
+        for engine in explicit symbolic; do
+            var=alive_$engine
+            [ "${!var}" = 1 ] || continue
+            run "${family}($n,$k)" "$engine" "$f" || eval "$var=0"
+        done
+        n=$((n + 1))
+    done
+done
+fi

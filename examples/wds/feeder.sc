@@ -1,29 +1,41 @@
 // The Feeder: a pneumatic cylinder that pushes the workpiece from the magazine to the
-// pick-up position (its stroke 0..100 %), with its speed set by the workpiece's weight.
-// Hand-discretized on the grid of 20 cells of 5 % (README.md): one transition per cell,
-// taken after the cell's crossing time.
+// pick-up position, its stroke 0..100 %, with its speed set by the workpiece's weight. Its
+// position is a `continuous` plant variable (docs/hybrid.md): the checker discretizes it on
+// the grid of 20 cells of 5 % itself, computes every clock reading T(x_i) = x_i / speed
+// exactly and refuses one that is not a whole number of ticks (README.md, "The motion").
+// Its two end-position sensors are range predicates on the position.
 import "common.sc";
 
-// Speeds in 0.1 %/s: pushing a light workpiece 2 %/s, a heavy one 0.8 %/s, retracting 4 %/s.
-chart Feeder(push_light: int[1..1000] = 20, push_heavy: int[1..1000] = 8, retract: int[1..1000] = 40) {
+// Speeds (ours, README.md): pushing a light workpiece 2 %/s, a heavy one 0.8 %/s, retracting 4 %/s.
+plant chart Feeder {
   input extend: bool = true;     // the valve: push while true, retract while false
   input first: Wp = LIGHT;       // the workpiece lying in the extended Feeder at the start
   input slot: Wp = NONE;         // the magazine's workpiece in front of the pusher
   input event taken;             // token protocol: the Transfer sucked the workpiece off
-  output pos: int[0..100] = 100; // the start: extended, the first workpiece at the pick-up position
   output wp: Wp = NONE;          // buffer of size 1: the workpiece being pushed
   output offer: Wp = NONE;       // READY: a workpiece at the pick-up position for the Transfer
+  output home: bool = false;     // the home end-position sensor, [0, 5] % (HOME_SENSOR's input)
+  output extended: bool = true;  // END_SENSOR, [95, 100] %
   output event took;             // the workpiece taken from the magazine
+  // The start: extended, the first workpiece at the pick-up position (README.md, "The start").
+  continuous pos: [0 .. 100] = 100;
+  grid pos 20;
+  sensor home = pos in [0 .. 5];
+  sensor extended = pos in [95 .. 100];
   initial Extended / { wp = first; };
   state Home {
-    on [extend] / { wp = slot; raise took; } -> Pushing;
+    on [extend] / { wp = slot; raise took; }
+      -> choice { [slot == HEAVY] -> PushingHeavy; else -> PushingLight; };
   }
-  state Pushing {
+  state PushingLight {
+    der(pos) = 2;
     on [!extend] -> Retracting;
-    on after((cell_ms(push_heavy)) ms) [wp == HEAVY] / { pos += CELL; }
-      -> choice { [pos == 100 - CELL] -> Extended; else -> Pushing; };
-    on after((cell_ms(push_light)) ms) [wp != HEAVY] / { pos += CELL; }
-      -> choice { [pos == 100 - CELL] -> Extended; else -> Pushing; };
+    on [pos >= 100] -> Extended;
+  }
+  state PushingHeavy {
+    der(pos) = 0.8;
+    on [!extend] -> Retracting;
+    on [pos >= 100] -> Extended;
   }
   state Extended {
     entry { offer = wp; }
@@ -31,8 +43,8 @@ chart Feeder(push_light: int[1..1000] = 20, push_heavy: int[1..1000] = 8, retrac
     on [!extend] -> Retracting;
   }
   state Retracting {
-    on [extend] -> Pushing;
-    on after((cell_ms(retract)) ms) / { pos -= CELL; }
-      -> choice { [pos == CELL] -> Home; else -> Retracting; };
+    der(pos) = -4;
+    on [extend] -> choice { [wp == HEAVY] -> PushingHeavy; else -> PushingLight; };
+    on [pos <= 0] -> Home;
   }
 }

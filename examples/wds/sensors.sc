@@ -1,33 +1,34 @@
-// Position sensors over a range of a linear axis (the Feeder's end-position sensors).
+// HOME_SENSOR between the Feeder's home range predicate (`Feeder.home`, pos in [0, 5] %) and
+// the Storage controller: ideal, or with a fault.
 import "common.sc";
 
-// A sensor reads the axis position and reports whether it lies in its range.
+// A sensor passes on its raw reading (the range predicate of the plant) to the controller.
 interface PositionSensor {
-  input pos: int[0..100];
+  input raw: bool;
   output detected: bool;
 }
 
-// The ideal sensor: detected exactly when lo <= pos <= hi.
-chart Sensor(lo: int[0..100], hi: int[0..100]) implements PositionSensor {
-  input pos: int[0..100] = 0;
+// The ideal sensor: detected exactly when the position lies in its range.
+chart Sensor implements PositionSensor {
+  input raw: bool = false;
   output detected: bool = false;
   initial Working;
   state Working {
-    entry { detected = lo <= pos && pos <= hi; }
-    during { detected = lo <= pos && pos <= hi; }
+    entry { detected = raw; }
+    during { detected = raw; }
   }
 }
 
 // A sensor that may fail at any tick (the free input `fail`): from then on it is stuck at
 // `false`, whatever the position (a broken wire).
-chart Sensor_with_Fault(lo: int[0..100], hi: int[0..100]) implements PositionSensor {
-  input pos: int[0..100] = 0;
+chart Sensor_with_Fault implements PositionSensor {
+  input raw: bool = false;
   input event fail;
   output detected: bool = false;
   initial Working;
   state Working {
-    entry { detected = lo <= pos && pos <= hi; }
-    during { detected = lo <= pos && pos <= hi; }
+    entry { detected = raw; }
+    during { detected = raw; }
     on fail / { detected = false; } -> Stuck;
   }
   state Stuck;

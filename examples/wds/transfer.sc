@@ -16,41 +16,51 @@ interface TransferDrive {
   output event released;      // the workpiece let go
 }
 
-// Suction: takes the offered workpiece at the pick-up position while the vacuum is on, and
-// lets it go where the vacuum goes off. (Written once per drive: charts cannot share regions.)
+// Suction (region `suction`): takes the offered workpiece at the pick-up position while the
+// vacuum is on, and lets it go where the vacuum goes off. The motion states are split by
+// load (der is per state): the load never changes while the drive moves.
 
-// L-Transfer: a stepper motor, constant speed per load. Speeds in 0.1 %/s: 2 %/s empty or
-// with a light workpiece, 0.5 %/s with a heavy one.
-chart LTransfer(fast: int[1..1000] = 20, slow: int[1..1000] = 5) implements TransferDrive {
+// L-Transfer: a stepper motor, constant speed per load: 2 %/s empty or with a light
+// workpiece, 0.5 %/s with a heavy one.
+plant chart LTransfer implements TransferDrive {
   input cmd: Move = STOP;
   input vacuum: bool = false;
   input offer: Wp = NONE;
-  output pos: int[0..100] = 100;
   output wp: Wp = NONE;
   output to_storage: bool = false;
   output event took;
   output event released;
+  continuous pos: [0 .. 100] = 100;   // the start: waiting at the unloading position
+  grid pos 20;
   region motion {
     initial Still;
     state Still {
-      on [cmd == TO_STORAGE && pos > 0] -> Backward;
-      on [cmd == TO_UNLOAD && pos < 100] -> Forward;
+      on [cmd == TO_STORAGE && pos > 0] -> choice { [wp == HEAVY] -> BackwardHeavy; else -> Backward; };
+      on [cmd == TO_UNLOAD && pos < 100] -> choice { [wp == HEAVY] -> ForwardHeavy; else -> Forward; };
     }
     state Forward {
+      der(pos) = 2;
       on [cmd != TO_UNLOAD] -> Still;
-      on after((cell_ms(slow)) ms) [wp == HEAVY] / { pos += CELL; }
-        -> choice { [pos == 100 - CELL] -> Still; else -> Forward; };
-      on after((cell_ms(fast)) ms) [wp != HEAVY] / { pos += CELL; }
-        -> choice { [pos == 100 - CELL] -> Still; else -> Forward; };
+      on [pos >= 100] -> Still;
+    }
+    state ForwardHeavy {
+      der(pos) = 0.5;
+      on [cmd != TO_UNLOAD] -> Still;
+      on [pos >= 100] -> Still;
     }
     state Backward {
+      der(pos) = -2;
       entry { to_storage = true; }
       exit { to_storage = false; }
       on [cmd != TO_STORAGE] -> Still;
-      on after((cell_ms(slow)) ms) [wp == HEAVY] / { pos -= CELL; }
-        -> choice { [pos == CELL] -> Still; else -> Backward; };
-      on after((cell_ms(fast)) ms) [wp != HEAVY] / { pos -= CELL; }
-        -> choice { [pos == CELL] -> Still; else -> Backward; };
+      on [pos <= 0] -> Still;
+    }
+    state BackwardHeavy {
+      der(pos) = -0.5;
+      entry { to_storage = true; }
+      exit { to_storage = false; }
+      on [cmd != TO_STORAGE] -> Still;
+      on [pos <= 0] -> Still;
     }
   }
   region suction {
@@ -64,47 +74,49 @@ chart LTransfer(fast: int[1..1000] = 20, slow: int[1..1000] = 5) implements Tran
   }
 }
 
-// D-Transfer: a DC motor. Its speed profile (ours, README.md): half speed over the 5 % next to
-// either end of the stroke (start-up when leaving it, slow-down when approaching it), full
-// speed between. Full speeds as for the L-Transfer.
-chart DTransfer(fast: int[1..1000] = 20, slow: int[1..1000] = 5) implements TransferDrive {
+// D-Transfer: a DC motor. Its speed profile (ours, README.md), measured from the start of each
+// motion (always at an end of the stroke): start-up at half speed for the first 5 % (5 s
+// empty or light, 20 s heavy), cruise at full speed over the 90 % between (45 s, 180 s),
+// slow-down at half speed over the last 5 %. Full speeds as for the L-Transfer.
+plant chart DTransfer implements TransferDrive {
   input cmd: Move = STOP;
   input vacuum: bool = false;
   input offer: Wp = NONE;
-  output pos: int[0..100] = 100;
   output wp: Wp = NONE;
   output to_storage: bool = false;
   output event took;
   output event released;
+  continuous pos: [0 .. 100] = 100;   // the start: waiting at the unloading position
+  grid pos 20;
   region motion {
     initial Still;
     state Still {
-      on [cmd == TO_STORAGE && pos > 0] -> Backward;
-      on [cmd == TO_UNLOAD && pos < 100] -> Forward;
+      on [cmd == TO_STORAGE && pos > 0] -> choice { [wp == HEAVY] -> BackwardHeavy; else -> Backward; };
+      on [cmd == TO_UNLOAD && pos < 100] -> choice { [wp == HEAVY] -> ForwardHeavy; else -> Forward; };
     }
     state Forward {
+      der(pos) = profile(1 for 5 s, 2 for 45 s, 1);
       on [cmd != TO_UNLOAD] -> Still;
-      on after((cell_ms(slow)) ms) [wp == HEAVY && pos != 0 && pos != 100 - CELL] / { pos += CELL; }
-        -> Forward;
-      on after((2 * cell_ms(slow)) ms) [wp == HEAVY && (pos == 0 || pos == 100 - CELL)] / { pos += CELL; }
-        -> choice { [pos == 100 - CELL] -> Still; else -> Forward; };
-      on after((cell_ms(fast)) ms) [wp != HEAVY && pos != 0 && pos != 100 - CELL] / { pos += CELL; }
-        -> Forward;
-      on after((2 * cell_ms(fast)) ms) [wp != HEAVY && (pos == 0 || pos == 100 - CELL)] / { pos += CELL; }
-        -> choice { [pos == 100 - CELL] -> Still; else -> Forward; };
+      on [pos >= 100] -> Still;
+    }
+    state ForwardHeavy {
+      der(pos) = profile(0.25 for 20 s, 0.5 for 180 s, 0.25);
+      on [cmd != TO_UNLOAD] -> Still;
+      on [pos >= 100] -> Still;
     }
     state Backward {
+      der(pos) = profile(-1 for 5 s, -2 for 45 s, -1);
       entry { to_storage = true; }
       exit { to_storage = false; }
       on [cmd != TO_STORAGE] -> Still;
-      on after((cell_ms(slow)) ms) [wp == HEAVY && pos != 100 && pos != CELL] / { pos -= CELL; }
-        -> Backward;
-      on after((2 * cell_ms(slow)) ms) [wp == HEAVY && (pos == 100 || pos == CELL)] / { pos -= CELL; }
-        -> choice { [pos == CELL] -> Still; else -> Backward; };
-      on after((cell_ms(fast)) ms) [wp != HEAVY && pos != 100 && pos != CELL] / { pos -= CELL; }
-        -> Backward;
-      on after((2 * cell_ms(fast)) ms) [wp != HEAVY && (pos == 100 || pos == CELL)] / { pos -= CELL; }
-        -> choice { [pos == CELL] -> Still; else -> Backward; };
+      on [pos <= 0] -> Still;
+    }
+    state BackwardHeavy {
+      der(pos) = profile(-0.25 for 20 s, -0.5 for 180 s, -0.25);
+      entry { to_storage = true; }
+      exit { to_storage = false; }
+      on [cmd != TO_STORAGE] -> Still;
+      on [pos <= 0] -> Still;
     }
   }
   region suction {
@@ -145,4 +157,26 @@ chart TransferController {
   state Releasing {
     on released -> AtUnload;
   }
+}
+
+// The Transfer station: its controller and its drive (a slot: `LTransfer` or `DTransfer`).
+component Transfer {
+  input run: bool;            // the panel's RUN
+  input allow_right: bool;    // the Storage's interlock
+  input offer: Wp;            // the workpiece the Feeder offers at the pick-up position
+  output event took;          // the suction took it (to the Feeder)
+  output event taken;         // TAKEN (to the Storage's controller)
+  instance tc: TransferController;
+  instance tr: TransferDrive;        // the L-Transfer or the D-Transfer
+  connect run -> tc.run;
+  connect allow_right -> tc.allow_right;
+  connect offer -> tr.offer;
+  connect tr.took -> took;
+  connect tc.taken -> taken;
+  connect tr.pos -> tc.pos;
+  connect tr.took -> tc.took;
+  connect tr.released -> tc.released;
+  connect tc.cmd -> tr.cmd;
+  connect tc.vacuum -> tr.vacuum;
+  order tc, tr;
 }

@@ -4,5 +4,5 @@ tick 1 s;
 plant chart P {
   continuous x: [0 .. 10] = 0;
   initial A;
-  state A { der(x) = (1 + 2); }
+  state A { der(x) = true; }
 }

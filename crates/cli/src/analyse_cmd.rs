@@ -1,7 +1,8 @@
 //! `statecheck analyse FILE [--scenario S]`: the continuous model's exact times
 //! (docs/hybrid.md). Without a scenario, each moving state's clock readings at the grid
 //! points; with one, the exact times at which the continuous motion reaches each critical
-//! point during the run, beside the tick at which the discretized model got there.
+//! point during the run, beside the tick at which the discretized model got there; with
+//! `--depth N`, the same for every sequence of discrete choices (`analyse_choices.rs`).
 
 use crate::{diag, load, Exit};
 use anyhow::{bail, Result};
@@ -19,6 +20,15 @@ pub struct AnalyseArgs {
     /// A scenario file: follow its run and list when each critical point is reached.
     #[arg(long)]
     pub scenario: Option<String>,
+    /// For every sequence of discrete choices up to this many (the free inputs, chosen at
+    /// tick 1, at each switch of a motion and when the system rests), list when each sensor's
+    /// zone is entered and left, exactly, and whether the grid contains each time.
+    #[arg(long, conflicts_with = "scenario")]
+    pub depth: Option<usize>,
+    /// With `--depth`: the most sequences listed (more: the output says it is truncated and
+    /// the exit code is 3).
+    #[arg(long, default_value_t = 200, requires = "depth")]
+    pub max_runs: usize,
     /// Print JSON instead of a table.
     #[arg(long)]
     pub json: bool,
@@ -27,13 +37,19 @@ pub struct AnalyseArgs {
 /// Run `analyse`.
 pub fn run(a: AnalyseArgs) -> Result<u8> {
     let loaded = load::load(&a.model, false)?;
-    let charts = match hybrid::plans(&loaded.file) {
+    let mut charts = match hybrid::plans(&loaded.file) {
         Ok(c) => c,
         Err(diags) => {
             diag::eprint_sources(&loaded.sources, &diags);
             return Err(load::ModelErrors.into());
         }
     };
+    // A parameterised chart is discretized per copy, with its values (`Mover(20)`).
+    for cp in &loaded.model.hybrid {
+        if !charts.iter().any(|c| c.chart == cp.chart) {
+            charts.push(cp.clone());
+        }
+    }
     if charts.is_empty() {
         bail!(
             "`{}` declares no continuous variable (docs/hybrid.md)",
@@ -44,6 +60,9 @@ pub fn run(a: AnalyseArgs) -> Result<u8> {
         bail!("the model declares no `tick`");
     };
     let tick = Ratio::new(ms as i128, 1000).unwrap_or(Ratio::ZERO);
+    if let Some(depth) = a.depth {
+        return crate::analyse_choices::run(&loaded, &a, depth, &charts, tick);
+    }
     match &a.scenario {
         None => readings(&charts, tick, a.json),
         Some(path) => events(&loaded, &a, path, &charts, tick),
@@ -151,7 +170,11 @@ fn events(
         };
         // A parameterised copy is named `Chart(args)`.
         let base = chart.name.split('(').next().unwrap_or(&chart.name);
-        let Some(cp) = charts.iter().find(|c| c.chart == base) else {
+        let Some(cp) = charts
+            .iter()
+            .find(|c| c.chart == chart.name)
+            .or_else(|| charts.iter().find(|c| c.chart == base))
+        else {
             continue;
         };
         for p in &cp.plans {

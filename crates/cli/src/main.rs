@@ -4,6 +4,7 @@
 //! diagnostics, traces and reports, and maps outcomes to exit codes
 //! (0 ok, 1 model or run-time error, 2 usage error, 4 a property was violated in a run).
 
+mod analyse_choices;
 mod analyse_cmd;
 mod diag;
 mod diag_json;

@@ -88,6 +88,16 @@ pub struct VerifyArgs {
     /// Explore even when there are more than a million input vectors per tick.
     #[arg(long)]
     force: bool,
+    /// Symmetry reduction in the explicit engine: the elements of instance arrays that
+    /// nothing tells apart are interchangeable, and one state is stored per orbit
+    /// (docs/verification.md, "Symmetry reduction"); what breaks an array's symmetry is
+    /// reported (W0316–W0318). Off by default: state counts are then those of every other
+    /// engine and of SPIN.
+    #[arg(long, overrides_with = "no_symmetry")]
+    symmetry: bool,
+    /// No symmetry reduction (the default).
+    #[arg(long)]
+    no_symmetry: bool,
     /// How the explicit engine computes successors: `interpreter` (the IR's register code),
     /// `native` (the C step function compiled by the system's C compiler, cross-checked
     /// against the interpreter), or `auto` (native once a search runs longer than 0.3 s).
@@ -203,7 +213,14 @@ pub fn run(a: VerifyArgs) -> Result<u8> {
     if a.certificate.is_some() && a.engine != symbolic::EngineArg::Ic3 {
         bail!("--certificate needs --engine ic3");
     }
-    let opts = options(&a, max_memory, remaining(timeout, started));
+    let mut opts = options(&a, max_memory, remaining(timeout, started));
+    if a.symmetry && !a.no_symmetry {
+        let found = statecheck_ir::symmetry::detect(sys, &program);
+        if !a.quiet {
+            crate::diag::eprint_sources(&loaded.sources, &found.diagnostics);
+        }
+        opts.symmetry = Some(std::sync::Arc::new(found.symmetry));
+    }
     let engine: statecheck_verify::Engine = a.engine.into();
     if a.workers.is_some() {
         if !matches!(

@@ -58,6 +58,18 @@ fn cases() -> Vec<(PathBuf, Option<&'static str>, Vec<PathBuf>)> {
         None,
         vec![root.join("tests/components/cell.scn")],
     ));
+    // A parameterised component and an array of components; an interleaved system (the
+    // scheduler is an input of the C step like any other).
+    out.push((
+        root.join("tests/components/bank.sc"),
+        None,
+        vec![root.join("tests/components/bank.scn")],
+    ));
+    out.push((
+        root.join("tests/components/interleaved.sc"),
+        Some("Async"),
+        vec![root.join("tests/components/interleaved.scn")],
+    ));
     let sem = root.join("tests/semantics");
     for name in [
         "choice", "history", "order", "parallel", "params", "priority", "runtime", "timers",

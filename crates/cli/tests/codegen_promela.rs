@@ -155,3 +155,76 @@ fn spin_agrees_with_the_explicit_checker_on_verdicts_and_state_counts() {
     assert!(verdicts >= 30, "only {verdicts} verdicts compared");
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// Properties and assumes that can fail at run time are exported (read as false where their
+/// evaluation fails, as the IR reads them): SPIN's verdicts equal the ones derived by hand in
+/// `tests/verify/goal_errors.sc`, which are also the explicit checker's.
+#[test]
+fn goals_that_can_fail_are_read_as_false_on_an_error() {
+    let root = repo_root();
+    let dir = temp_dir();
+    let model = root.join("tests/verify/goal_errors.sc");
+    // (system, property, violated or reachable) by hand.
+    let expected = [
+        ("Goals", "div_fails", true),
+        ("Goals", "div_guarded", false),
+        ("Goals", "six", true),
+        ("Goals", "five", false),
+        ("Assumed", "div_fails", false),
+    ];
+    for (system, prop, hand) in expected {
+        let (theirs, _) = spin(&dir, &model, system, &[prop]);
+        assert_eq!(theirs, hand, "SPIN on {system}.{prop}");
+        let v = verify(&model, system);
+        let ours = v["results"]
+            .as_array()
+            .and_then(|r| r.iter().find(|r| r["property"] == prop))
+            .and_then(|r| r["verdict"].as_str())
+            .map(|s| matches!(s, "violated" | "reachable"));
+        assert_eq!(ours, Some(hand), "statecheck on {system}.{prop}");
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// The FAM closed loop (master + 1 FAM), whose properties and assumes can fail at run time,
+/// exports to Promela that SPIN accepts and gcc compiles (its state space is for
+/// `scripts/bench_spin.sh`, not a test).
+#[test]
+fn the_fam_closed_loop_exports_to_promela_that_spin_and_gcc_accept() {
+    let root = repo_root();
+    let dir = temp_dir();
+    let pml = dir.join("m.pml");
+    let out = Command::new(env!("CARGO_BIN_EXE_statecheck"))
+        .args(["export", "promela"])
+        .arg(root.join("examples/fam/fam_system.sc"))
+        .arg("-o")
+        .arg(&pml)
+        .output()
+        .expect("export runs");
+    assert!(
+        out.status.success(),
+        "export: {}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let a = Command::new("spin")
+        .args(["-a", "m.pml"])
+        .current_dir(&dir)
+        .output()
+        .expect("spin runs");
+    assert!(
+        a.status.success() && dir.join("pan.c").exists(),
+        "spin -a: {}",
+        String::from_utf8_lossy(&a.stdout)
+    );
+    let cc = Command::new("gcc")
+        .args(["-O0", "-DSAFETY", "-DNOFAIR", "-o", "pan", "pan.c"])
+        .current_dir(&dir)
+        .output()
+        .expect("gcc runs");
+    assert!(
+        cc.status.success(),
+        "gcc pan.c: {}",
+        String::from_utf8_lossy(&cc.stderr)
+    );
+    let _ = std::fs::remove_dir_all(&dir);
+}

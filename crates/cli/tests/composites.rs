@@ -261,3 +261,180 @@ fn synthesis_accepts_a_parameterised_plant_chart() {
     assert_eq!(code, 0, "{out}{err}");
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+const BANK: &str = "tests/components/bank.sc";
+const BANK_FLAT: &str = "tests/components/bank_flat.sc";
+
+/// (states, transitions, rows) of `verify --json` for `bank*.sc` (`p_three` is unreachable:
+/// exit 1), property names with `.`, `[`, `]` read as `_`.
+fn bank_summary(file: &str, engine: &str) -> Summary {
+    let (code, out, err) = run(&["verify", "--engine", engine, "--json", file]);
+    assert_eq!(code, 1, "{file}: {err}");
+    let v: Value = serde_json::from_str(&out).unwrap_or_else(|e| panic!("{e}: {out}"));
+    let mut rows: Vec<(String, String, Option<u64>)> = v["results"]
+        .as_array()
+        .map(|a| {
+            a.iter()
+                .map(|r| {
+                    let name = r["property"].as_str().unwrap_or("?");
+                    (
+                        name.replace(['.', '[', ']'], "_"),
+                        r["verdict"].as_str().unwrap_or("?").to_string(),
+                        r["tick"].as_u64(),
+                    )
+                })
+                .collect()
+        })
+        .unwrap_or_default();
+    rows.sort();
+    (
+        v["stats"]["states"].as_u64().unwrap_or(0),
+        v["stats"]["transitions"].as_u64().unwrap_or(0),
+        rows,
+    )
+}
+
+#[test]
+fn a_parameterised_component_and_an_array_of_components_verify_like_the_hand_flattened_system() {
+    let bank = bank_summary(BANK, "explicit");
+    assert_eq!(bank, bank_summary(BANK_FLAT, "explicit"));
+    // By hand (bank.sc's header): 3 * 4 * 4 = 48 started states plus the state before the
+    // first tick; 3 free events, so 8 input vectors from each state.
+    assert_eq!((bank.0, bank.1), (49, 49 * 8));
+    let verdict = |n: &str| {
+        bank.2
+            .iter()
+            .find(|r| r.0 == n)
+            .map(|r| (r.1.as_str(), r.2))
+            .unwrap_or(("missing", None))
+    };
+    // Tick 0 enters; `step` in ticks 1, 2, 3 brings cells[1].hi to 3 in tick 3 (Pair(3)),
+    // p.hi stops at 2 (Pair(2)), so 3 is unreachable for it.
+    assert_eq!(verdict("c1_full"), ("reachable", Some(3)));
+    assert_eq!(verdict("p_full"), ("reachable", Some(2)));
+    assert_eq!(verdict("p_three").0, "unreachable");
+    for p in [
+        "p_capped",
+        "cells_0__capped",
+        "cells_1__capped",
+        "lo_follows",
+    ] {
+        assert_eq!(verdict(p).0, "proved", "{p}");
+    }
+    // A SAT engine agrees on every verdict.
+    let verdicts = |s: &Summary| {
+        s.2.iter()
+            .map(|r| (r.0.clone(), r.1.clone()))
+            .collect::<Vec<_>>()
+    };
+    assert_eq!(verdicts(&bank_summary(BANK, "ic3")), verdicts(&bank));
+}
+
+#[test]
+fn an_array_of_components_simulates_by_element_path() {
+    let dir = std::env::temp_dir().join(format!("statecheck-bank-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).expect("temp dir");
+    let scn = |name: &str, a: &str, b: &str| {
+        let p = dir.join(name);
+        std::fs::write(&p, format!("-\n{a}\n-\n{a}\n{b}\n")).expect("write scenario");
+        p.to_string_lossy().into_owned()
+    };
+    let a = scn("bank.scn", "cells[1].lo.step", "p.lo.step");
+    let b = scn("flat.scn", "cells_1__lo.step", "p_lo.step");
+    let (c1, t1, e1) = run(&["sim", BANK, "--scenario", &a, "--csv"]);
+    let (c2, t2, e2) = run(&["sim", BANK_FLAT, "--scenario", &b, "--csv"]);
+    assert_eq!((c1, c2), (0, 0), "{e1}{e2}");
+    assert_eq!(
+        t1.replace(['.', '[', ']'], "_"),
+        t2.replace(['.', '[', ']'], "_")
+    );
+    let header = t1.lines().next().unwrap_or("");
+    let col = header
+        .split(',')
+        .position(|c| c == "cells[1].hi.n")
+        .unwrap_or_else(|| panic!("{header}"));
+    let n: Vec<&str> = t1
+        .lines()
+        .skip(1)
+        .map(|l| l.split(',').nth(col).unwrap_or(""))
+        .collect();
+    // Steps in ticks 1 and 3: 1 from tick 1, 2 from tick 3.
+    assert_eq!(n, ["0", "1", "1", "2", "2"], "{t1}");
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+const INTERLEAVED: &str = "tests/components/interleaved.sc";
+
+/// (exit code, states, transitions, verdict of `same`, its tick) of one system of
+/// `interleaved.sc` under one engine.
+fn same_verdict(system: &str, engine: &str) -> (i32, u64, u64, String, Option<u64>) {
+    let (code, out, err) = run(&[
+        "verify",
+        "--engine",
+        engine,
+        "--system",
+        system,
+        "--json",
+        INTERLEAVED,
+    ]);
+    let v: Value = serde_json::from_str(&out).unwrap_or_else(|e| panic!("{e}: {out}{err}"));
+    let row = v["results"]
+        .as_array()
+        .and_then(|a| a.iter().find(|r| r["property"] == "same"))
+        .cloned()
+        .unwrap_or(Value::Null);
+    (
+        code,
+        v["stats"]["states"].as_u64().unwrap_or(0),
+        v["stats"]["transitions"].as_u64().unwrap_or(0),
+        row["verdict"].as_str().unwrap_or("missing").to_string(),
+        row["tick"].as_u64(),
+    )
+}
+
+#[test]
+fn interleaved_composition_breaks_what_synchronous_composition_keeps() {
+    // By hand (interleaved.sc's header): synchronous, 3 states, 3 transitions, `same` holds;
+    // interleaved, 5 states, 10 transitions (2 scheduler choices), violated at tick 1 when
+    // `a` steps alone.
+    let (code, states, transitions, verdict, _) = same_verdict("Sync", "explicit");
+    assert_eq!(
+        (code, states, transitions, verdict.as_str()),
+        (0, 3, 3, "proved")
+    );
+    let (code, states, transitions, verdict, tick) = same_verdict("Async", "explicit");
+    assert_eq!(
+        (code, states, transitions, verdict.as_str(), tick),
+        (1, 5, 10, "violated", Some(1))
+    );
+    // A SAT engine: the same violation at the same depth, nothing found synchronously.
+    let (code, _, _, verdict, tick) = same_verdict("Async", "bmc");
+    assert_eq!((code, verdict.as_str(), tick), (1, "violated", Some(1)));
+    let (code, _, _, verdict, _) = same_verdict("Sync", "ic3");
+    assert_eq!((code, verdict.as_str()), (0, "proved"));
+    // The scheduler is an ordinary input of the trace: b alone in tick 1 keeps y == x
+    // (both false), a alone in tick 2 breaks it (exit 4: violated during sim).
+    let dir = std::env::temp_dir().join(format!("statecheck-interleaved-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).expect("temp dir");
+    let scn = dir.join("async.scn");
+    std::fs::write(&scn, "-\nsched.unit=1\nsched.unit=0\n").expect("write scenario");
+    let scn = scn.to_string_lossy().into_owned();
+    let (code, csv, err) = run(&[
+        "sim",
+        INTERLEAVED,
+        "--system",
+        "Async",
+        "--scenario",
+        &scn,
+        "--csv",
+    ]);
+    assert_eq!(code, 4, "{err}");
+    let rows: Vec<&str> = csv.lines().collect();
+    assert_eq!(
+        rows[0],
+        "tick,sched.active,a.active,b.active,sched.unit,a.x,b.i,b.y,events"
+    );
+    assert_eq!(rows[2], "1,Run,S,S,1,false,false,false,");
+    assert_eq!(rows[3], "2,Run,S,S,0,true,true,false,");
+    let _ = std::fs::remove_dir_all(&dir);
+}

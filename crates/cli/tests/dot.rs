@@ -133,3 +133,19 @@ fn svg_without_graphviz_is_error_e0901() {
     assert!(err.contains("install the `graphviz` package"), "{err}");
     assert!(out.stdout.is_empty());
 }
+
+#[test]
+fn a_timer_in_ticks_also_shows_its_time() {
+    // With `tick 100 ms;`, `after(30)` is 30 × 0.1 s = 3.0 s (one decimal, as every time of
+    // a 100 ms tick); `after(2 s)` is already in units and stays as written.
+    let file = temp("timers.sc");
+    std::fs::write(
+        &file,
+        "tick 100 ms;\nchart Lamp {\n  input event press;\n  initial Off;\n  state Off { on press -> On; }\n  state On { on after(30) -> Dim; }\n  state Dim { on after(2 s) -> Off; }\n}\n",
+    )
+    .expect("write");
+    let out = statecheck(&["dot", &file.to_string_lossy()], &[]);
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert!(text.contains("[label=\"after(30) = 3.0 s\"]"), "{text}");
+    assert!(text.contains("[label=\"after(2 s)\"]"), "{text}");
+}

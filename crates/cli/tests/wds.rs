@@ -189,12 +189,12 @@ fn collision_is_95_ticks_after_the_heavy_workpiece_is_available() {
             "{key}"
         );
         let ticks = trace["ticks"].as_array().expect("ticks");
-        let taken = first_event(ticks, "tr.took", 0).expect("the first workpiece taken");
+        let taken = first_event(ticks, "s.tx.tr.took", 0).expect("the first workpiece taken");
         assert_eq!(taken, want["taken"].as_u64().expect("taken"), "{key}");
         let available = ticks
             .iter()
             .filter(|t| t["tick"].as_u64() > Some(taken))
-            .find(|t| t["vars"]["mag.present"] == true)
+            .find(|t| t["vars"]["s.st.mag.present"] == true)
             .and_then(|t| t["tick"].as_u64())
             .expect("the second workpiece available");
         assert_eq!(
@@ -205,9 +205,9 @@ fn collision_is_95_ticks_after_the_heavy_workpiece_is_available() {
         assert_eq!(collision - available, after, "{key}");
         // The heavy one: the workpiece the Feeder pushes when it enters its area.
         let last = ticks.last().expect("ticks");
-        assert_eq!(last["vars"]["f.wp"], "HEAVY", "{key}");
-        assert_eq!(last["vars"]["f.pos"], 95, "{key}");
-        assert!(last["vars"]["tr.pos"].as_u64() <= Some(5), "{key}");
+        assert_eq!(last["vars"]["s.st.f.wp"], "HEAVY", "{key}");
+        assert_eq!(last["vars"]["s.st.f.pos"], 95, "{key}");
+        assert!(last["vars"]["s.tx.tr.pos"].as_u64() <= Some(5), "{key}");
         let _ = std::fs::remove_dir_all(&dir);
     }
 }
@@ -258,4 +258,55 @@ fn bmc_agrees_with_the_explicit_engine_on_every_ordering() {
             assert!(b["depth"].as_u64() > Some(depth), "{name}: {b}");
         }
     }
+}
+
+/// `analyse` on the hybrid Feeder and along the checked-in collision (README.md, "The motion,
+/// discretized by the checker" and "The first collision"): pushing a heavy workpiece at
+/// 0.8 %/s from 0 reaches 95 % at 95 / 0.8 = 118.75 s = 95 ticks of 1.25 s; along
+/// collision_faulty_L.scn (START in tick 1, the heavy workpiece available in tick A = 65) the
+/// Feeder enters 95 % in PushingHeavy at (65 + 95) × 1.25 s = 200 s, tick 160, and the
+/// discretized model reaches it in the same tick (`exact`).
+#[test]
+fn analyse_reports_the_collision_zone_entry_exactly() {
+    let (code, readings) = run_json(&["analyse", &wds("feeder.sc"), "--json"]);
+    assert_eq!(code, 0, "{readings}");
+    assert_eq!(readings["tick_seconds"], "1.25");
+    let heavy = readings["variables"][0]["modes"]
+        .as_array()
+        .expect("modes")
+        .iter()
+        .find(|m| m["state"] == "PushingHeavy")
+        .expect("PushingHeavy");
+    assert_eq!(heavy["from"], 0);
+    let at95 = heavy["readings"]
+        .as_array()
+        .expect("readings")
+        .iter()
+        .find(|r| r["point"] == 95)
+        .expect("95");
+    assert_eq!(
+        (&at95["seconds"], &at95["ticks"]),
+        (&"118.75".into(), &"95".into())
+    );
+
+    let (code, run) = run_json(&[
+        "analyse",
+        &wds("wds.sc"),
+        "--system",
+        "WDS:faulty_L_sensor",
+        "--scenario",
+        &wds("collision_faulty_L.scn"),
+        "--json",
+    ]);
+    assert_eq!(code, 0, "{run}");
+    let events = run["events"].as_array().expect("events");
+    let enter = events
+        .iter()
+        .find(|e| e["instance"] == "s.st.f" && e["state"] == "PushingHeavy" && e["point"] == 95)
+        .expect("the Feeder enters its area with the heavy workpiece");
+    assert_eq!(enter["seconds"], "200", "{enter}");
+    assert_eq!(enter["model_tick"], 160, "{enter}");
+    assert_eq!(enter["status"], "exact", "{enter}");
+    // Every critical point of the run is reached at a tick of the discretized model.
+    assert!(events.iter().all(|e| e["status"] == "exact"), "{events:?}");
 }

@@ -18,8 +18,10 @@ const ROUNDS: usize = 20;
 
 fn lower(path: &str, system: &str) -> Program {
     let text = std::fs::read_to_string(path).expect("model readable");
-    let (file, _) = statecheck_syntax::parse(&text);
-    let (model, diags) = statecheck_model::check(&file);
+    // Follow the model's imports (fam.sc imports lib/).
+    let program =
+        statecheck_model::imports::load_with(path, text, |k| std::fs::read_to_string(k).ok());
+    let (model, diags) = statecheck_model::check(&program.file);
     assert!(!diags.iter().any(|d| d.is_error()), "model has errors");
     let sys = model.system(system).expect("system exists");
     statecheck_ir::lower(&model, sys).expect("lowers")

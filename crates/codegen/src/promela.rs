@@ -6,14 +6,17 @@
 //! nondeterministically (`if :: x = v ... fi`, every value of the type), then a `d_step` checks
 //! the `assume`s, runs the translated step and asserts the selected properties. A run-time error
 //! ends the tick without a successor (the state before the tick is restored) unless its
-//! built-in property was selected, in which case it is an assertion failure.
+//! built-in property was selected, in which case it is an assertion failure. Properties and
+//! assumes are read as the IR reads every goal: an expression whose evaluation fails (a
+//! division by zero, an index out of range) is false, so the assertion of an invariant fails
+//! and an assume rejects the input vector.
 //!
 //! SPIN's own limits: a step with more jump points than a `d_step` may hold (2048) runs as an
 //! `atomic` sequence instead (slower for SPIN, same verdicts), and a procedure longer than SPIN's inline buffer (64 KiB) is written out at
 //! each call instead of as an `inline`. `else if` chains are written flat (a one-pass `do` left
 //! by `break`), so the text grows linearly with a state's transitions.
 
-use crate::c_expr::{else_if_chain, lets_in_stmts, pure};
+use crate::c_expr::{else_if_chain, lets_in_expr, lets_in_stmts, pure};
 use crate::common::{area, slot_fields, Area, Source};
 use statecheck_ir::{BinOp, UnOp};
 use statecheck_ir::{Goal, Node, Program, SlotId, Stmt};
@@ -69,6 +72,8 @@ pub fn export(p: &Program, src: &Source, opts: &PromelaOptions) -> Result<String
         fail_div: selected("no_division_by_zero"),
         fail_shift: selected("no_bad_shift"),
         fail_range: selected("no_range_overflow"),
+        on_error: None,
+        labels: 0,
         out: String::new(),
     };
     let mut text = format!(
@@ -125,36 +130,36 @@ pub fn export(p: &Program, src: &Source, opts: &PromelaOptions) -> Result<String
     let step = std::mem::take(&mut g.out);
     let step_jumps = jump_points(&step) + g.calls.iter().map(|c| jumps[*c as usize]).sum::<usize>();
     let mut props = String::new();
-    let mut any_selected = false;
     for prop in &p.properties {
         let all = opts.properties.is_empty();
-        let (cond, by_default) = match prop.goal {
+        let by_default = !prop.goal.is_reach();
+        if !((all && by_default) || selected(&prop.name)) {
+            continue;
+        }
+        // Each expression reads as the IR reads a goal: an evaluation error is false.
+        let cond = match prop.goal {
             Goal::Always { when, holds } => {
-                let e = g.pure_expr(holds)?;
+                let e = g.truth(holds, &mut props);
                 match when {
-                    Some(a) => (format!("!({}) || ({e})", g.pure_expr(a)?), true),
-                    None => (e, true),
+                    Some(a) => format!("!({}) || ({e})", g.truth(a, &mut props)),
+                    None => e,
                 }
             }
-            Goal::Reach { target } => (format!("!({})", g.pure_expr(target)?), false),
+            Goal::Reach { target } => format!("!({})", g.truth(target, &mut props)),
         };
-        if (all && by_default) || selected(&prop.name) {
-            any_selected = true;
-            let _ = writeln!(
-                props,
-                "            assert({cond}); /* {} ({}) */",
-                prop.name,
-                src.at(prop.span)
-            );
-        }
+        let _ = writeln!(
+            props,
+            "            assert({cond}); /* {} ({}) */",
+            prop.name,
+            src.at(prop.span)
+        );
     }
-    let _ = any_selected;
     let mut assumes = String::new();
     for a in &p.assumes {
+        let c = g.truth(*a, &mut assumes);
         let _ = writeln!(
             assumes,
-            "            if :: !({}) -> goto tick_end :: else -> skip fi;",
-            g.pure_expr(*a)?
+            "            if :: !({c}) -> goto tick_end :: else -> skip fi;"
         );
     }
     let mut temps = String::new();
@@ -162,6 +167,14 @@ pub fn export(p: &Program, src: &Source, opts: &PromelaOptions) -> Result<String
     lets_in_stmts(p, &p.step, &mut locals);
     for pr in &p.procs {
         lets_in_stmts(p, &pr.body, &mut locals);
+    }
+    for e in p
+        .assumes
+        .iter()
+        .copied()
+        .chain(p.properties.iter().flat_map(|q| q.goal.exprs()))
+    {
+        lets_in_expr(p, e, &mut locals);
     }
     for l in locals {
         let _ = writeln!(temps, "hidden int l{l};");
@@ -267,6 +280,11 @@ struct Pml<'a> {
     fail_div: bool,
     fail_shift: bool,
     fail_range: bool,
+    /// While a goal or assume is read: the label its evaluation errors jump to (the
+    /// expression is then false), instead of ending the tick.
+    on_error: Option<String>,
+    /// Labels made so far (each unique in the proctype).
+    labels: usize,
     out: String,
 }
 
@@ -275,8 +293,12 @@ impl Pml<'_> {
         let _ = writeln!(self.out, "{}{s}", "    ".repeat(d));
     }
 
-    /// The statement that ends the tick on a run-time error of a (non-)selected kind.
+    /// The statement that ends the tick on a run-time error of a (non-)selected kind, or,
+    /// while a goal or assume is read, makes the expression false.
     fn error(&self, asserted: bool) -> String {
+        if let Some(label) = &self.on_error {
+            return format!("goto {label}");
+        }
         if asserted {
             return "assert(false)".into();
         }
@@ -286,13 +308,26 @@ impl Pml<'_> {
         format!("{}; goto tick_end", restore.join("; "))
     }
 
-    fn pure_expr(&mut self, e: u32) -> Result<String, ExportError> {
-        if !pure(self.p, e) {
-            return Err(ExportError(
-                "a property or assumption can fail at run time; not exportable".into(),
-            ));
+    /// A Promela condition true exactly when `e` evaluates without error to non-zero (how the
+    /// IR reads goals and assumes). An expression that can fail is evaluated by statements
+    /// appended to `to` (inside the tick's step, indented as it): a temporary set to 0, the
+    /// evaluation (an error jumps past the rest), then the temporary set to its truth.
+    fn truth(&mut self, e: u32, to: &mut String) -> String {
+        if pure(self.p, e) {
+            return self.expr(e, 0);
         }
-        Ok(self.expr(e, 0))
+        let saved = std::mem::take(&mut self.out);
+        self.labels += 1;
+        let label = format!("ev_false_{}", self.labels);
+        self.on_error = Some(label.clone());
+        let t = self.fresh();
+        self.line(3, &format!("{t} = 0;"));
+        let x = self.expr(e, 3);
+        self.line(3, &format!("{t} = (({x}) != 0);"));
+        self.line(3, &format!("{label}: skip;"));
+        self.on_error = None;
+        to.push_str(&std::mem::replace(&mut self.out, saved));
+        t
     }
 
     fn slot(&self, s: SlotId) -> String {

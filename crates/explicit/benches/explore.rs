@@ -36,7 +36,7 @@ fn main() {
     let (n, m, threads) = (arg(0, 4), arg(1, 63), arg(2, 0));
     let backend = common::backend(args.get(3));
     let text = model(n, m);
-    let program = common::bench_program(&text);
+    let program = common::bench_program("bench.sc", &text);
     let opts = Options {
         threads,
         backend,

@@ -30,11 +30,14 @@ const WIRES: [&str; 10] = [
     "saveFails",
 ];
 
+/// The model the benchmark's charts come from (it imports the FAM chart from lib/).
+const FAM_ALONE: &str = concat!(
+    env!("CARGO_MANIFEST_DIR"),
+    "/../../examples/fam/fam_alone.sc"
+);
+
 fn model(n: usize) -> Result<String, String> {
-    let path = concat!(
-        env!("CARGO_MANIFEST_DIR"),
-        "/../../examples/fam/fam_alone.sc"
-    );
+    let path = FAM_ALONE;
     let text = std::fs::read_to_string(path).map_err(|e| format!("{path}: {e}"))?;
     let charts = text
         .split("\nsystem ")
@@ -67,7 +70,7 @@ fn main() {
             std::process::exit(1);
         }
     };
-    let program = common::bench_program(&text);
+    let program = common::bench_program(FAM_ALONE, &text);
     let backend = common::backend(args.get(3));
     let opts = Options {
         threads,

@@ -7,6 +7,7 @@ use crate::native::NativeRun;
 use crate::pack::{Key, Packer};
 use crate::props::{Check, Spec};
 use crate::reduce::{Reducer, Tally};
+use crate::symmetry::Canon;
 use crate::table::{shard_of, SHARDS};
 use statecheck_ir::assume::InputSpace;
 use statecheck_ir::{ExprId, Goal, Machine, Prepared, Program, RuntimeError};
@@ -21,6 +22,7 @@ pub(crate) struct Cand<K> {
 }
 
 /// A transition that decides a property (a violation, a witness, a run-time error).
+#[derive(Clone)]
 pub(crate) struct Found<K> {
     /// Index into the checked properties.
     pub prop: usize,
@@ -55,6 +57,8 @@ pub(crate) struct Expander<'a> {
     pub native: Option<&'a NativeRun>,
     /// The input abstraction, when enabled ([`crate::Options::reduce_inputs`]).
     pub reduce: Option<&'a Reducer>,
+    /// Symmetry reduction: successors stored in canonical form ([`crate::symmetry`]).
+    pub sym: Option<&'a Canon>,
 }
 
 impl Expander<'_> {
@@ -196,7 +200,10 @@ impl Expander<'_> {
             Err(e) => self.record_error(e, &t, open, out),
             Ok(()) => {
                 self.watch(m, &t, open, out);
-                let succ: K = self.packer.pack(m.state(), words);
+                let succ: K = match self.sym {
+                    Some(c) => c.pack(self.packer, m.state(), words),
+                    None => self.packer.pack(m.state(), words),
+                };
                 push_successor(succ, &t, out);
             }
         }

@@ -30,6 +30,7 @@ pub mod props;
 mod reduce;
 mod search;
 pub mod successors;
+mod symmetry;
 pub mod table;
 mod trace;
 
@@ -83,6 +84,11 @@ pub struct Options {
     /// search checks it between blocks and ends with [`Limit::Stopped`]; counterexamples
     /// already found are still rebuilt.
     pub stop: Option<std::sync::Arc<std::sync::atomic::AtomicBool>>,
+    /// Symmetry reduction (`verify --symmetry`): the interchangeable array elements found by
+    /// `statecheck_ir::symmetry::detect`; the safety search then stores one state per orbit
+    /// (state counts are orbits), with the interpreter's successors, and maps counterexamples
+    /// back to concrete runs. Temporal properties are checked without it.
+    pub symmetry: Option<std::sync::Arc<statecheck_ir::symmetry::Symmetry>>,
 }
 
 /// How the explicit engine computes successors.
@@ -130,6 +136,7 @@ impl Default for Options {
             compiler: None,
             reduce_inputs: true,
             stop: None,
+            symmetry: None,
         }
     }
 }
@@ -238,6 +245,11 @@ pub struct Stats {
     pub native_build_time: Option<Duration>,
     /// Why the native generator was not used, or was abandoned, when it was asked for.
     pub native_note: Option<String>,
+    /// True when the search stored one state per orbit of interchangeable array elements
+    /// ([`Options::symmetry`]): `states` then counts orbits.
+    pub symmetry: bool,
+    /// Why symmetry reduction was asked for but not used.
+    pub symmetry_note: Option<String>,
 }
 
 impl Stats {
@@ -370,7 +382,27 @@ fn verify_safety(
                 reason: e.to_string(),
             },
         })?;
-    let native = prepare_native(program, &packer, &space, opts, &mut stats);
+    let canon = opts
+        .symmetry
+        .as_deref()
+        .and_then(|s| symmetry::Canon::new(program, s, &specs));
+    let canon = match canon {
+        Some(c) => match c.validate(program, space.per_tick(), |i| space.vector(i), 8, 64) {
+            Ok(()) => Some(c),
+            Err(why) => {
+                stats.symmetry_note = Some(format!("symmetry reduction off: {why}"));
+                None
+            }
+        },
+        None => None,
+    };
+    stats.symmetry = canon.is_some();
+    // The native generator packs states itself, without the canonical form.
+    let native = if canon.is_some() {
+        None
+    } else {
+        prepare_native(program, &packer, &space, opts, &mut stats)
+    };
     let started = std::sync::atomic::AtomicBool::new(opts.backend != Backend::Auto);
     // With `auto`, a search that is still running compiles the native generator.
     let watch = |pr: &Progress| {
@@ -398,6 +430,7 @@ fn verify_safety(
         coverage: true,
         native: native.as_ref(),
         reduce: reducer.as_ref(),
+        sym: canon.as_ref(),
     };
     let explore = |exp: &Expander, stats: Stats| {
         pool.install(|| {
@@ -495,6 +528,48 @@ fn prepare_native(
     run
 }
 
+/// Under symmetry reduction: the canonical paths made concrete, and each family of element
+/// properties answered together (a member decided makes every member decided, each with the
+/// run that decides it).
+fn symmetry_results<K: Key>(
+    p: &Program,
+    c: &symmetry::Canon,
+    specs: &[props::Spec],
+    found: &mut [Option<(u64, expand::Found<K>)>],
+    traces: &mut [Result<Vec<Vec<i64>>, String>],
+) {
+    for path in traces.iter_mut().flatten() {
+        *path = c.concretize(p, path);
+    }
+    for (g, fam) in &c.families {
+        let Some(&j) = fam.iter().find(|&&q| found[q].is_some()) else {
+            continue;
+        };
+        let (Some(first), first_tr) = (found[j].clone(), traces[j].clone()) else {
+            continue;
+        };
+        for (k, &q) in fam.iter().enumerate() {
+            // A member found itself keeps its own (shortest) run, else the first member's.
+            let tr = match &found[q] {
+                Some(_) => traces[q].clone(),
+                None => first_tr.clone(),
+            };
+            let run = match &tr {
+                Ok(run) => c.member_run(p, run, (*g, fam), k, specs).ok_or_else(|| {
+                    "counterexample not rebuilt: no exchange of elements replays it (internal error)"
+                        .to_string()
+                }),
+                Err(why) => Err(why.clone()),
+            };
+            if found[q].is_none() {
+                let (layer, f) = first.clone();
+                found[q] = Some((layer, expand::Found { prop: q, ..f }));
+            }
+            traces[q] = run;
+        }
+    }
+}
+
 /// Explore, then rebuild the counterexamples; `--timeout` counts from `start` and bounds both.
 fn run<K: Key>(
     exp: &Expander,
@@ -534,12 +609,16 @@ fn run<K: Key>(
     let cex_start = std::time::Instant::now();
     // What is left of the time budget bounds the reconstruction too.
     let budget = opts.timeout.map(|t| t.saturating_sub(start.elapsed()));
-    let traces = trace::rebuild::<K>(exp, &s.found, opts.max_memory, budget);
+    let mut traces = trace::rebuild::<K>(exp, &s.found, opts.max_memory, budget);
+    let mut found = s.found;
+    if let Some(c) = exp.sym {
+        symmetry_results(exp.program, c, exp.specs, &mut found, &mut traces);
+    }
     stats.cex_time = cex_start.elapsed();
     let results = exp
         .specs
         .iter()
-        .zip(s.found)
+        .zip(found)
         .zip(traces)
         .map(|((spec, found), tr)| {
             let reach = spec.kind == PropKind::Reachable;

@@ -105,9 +105,11 @@ pub(crate) fn search<K: Key>(
     let mut found: Vec<Option<(u64, Found<K>)>> = (0..n_props).map(|_| None).collect();
     let mut covered = exp.coverage.then(|| vec![false; exp.program.covers.len()]);
     let mut words = vec![0u64; exp.packer.words];
-    let init: K = exp
-        .packer
-        .pack(Machine::new(exp.program).state(), &mut words);
+    let m0 = Machine::new(exp.program);
+    let init: K = match exp.sym {
+        Some(c) => c.pack(exp.packer, m0.state(), &mut words),
+        None => exp.packer.pack(m0.state(), &mut words),
+    };
     let mut visited: Visited<K> = Visited::new();
     visited.insert(&init);
     let mut frontier: Vec<K> = vec![init];

@@ -36,6 +36,7 @@ pub(crate) fn rebuild<K: Key>(
         coverage: false,
         native: exp.native,
         reduce: exp.reduce,
+        sym: exp.sym,
     };
     if deepest > 0 && budget.is_some_and(|b| b.is_zero()) {
         let why = "counterexample not rebuilt: the time limit was used up by the exploration";
@@ -125,6 +126,7 @@ mod tests {
             coverage: false,
             native: None,
             reduce: None,
+            sym: None,
         };
         let s = search::<u64>(&exp, Limits::default(), None, None);
         // Tick 0 starts the chart; ticks 1..5 increment: c == 5 after tick 5, the 6th tick,

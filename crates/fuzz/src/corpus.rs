@@ -45,10 +45,14 @@ fn read(p: &Path) -> Option<Vec<u8>> {
     std::fs::read(p).ok()
 }
 
-fn lower_all(src: &str) -> Vec<statecheck_ir::Program> {
-    let (file, d1) = statecheck_syntax::parse(src);
-    let (model, d2) = statecheck_model::check(&file);
-    if d1.iter().chain(&d2).any(|d| d.is_error()) {
+/// Every system of the model file `path` (text `src`, its imports read relative to it).
+fn lower_all(path: &Path, src: &str) -> Vec<statecheck_ir::Program> {
+    let program =
+        statecheck_model::imports::load_with(&path.to_string_lossy(), src.to_string(), |k| {
+            std::fs::read_to_string(k).ok()
+        });
+    let (model, d2) = statecheck_model::check(&program.file);
+    if program.diags.iter().chain(&d2).any(|d| d.is_error()) {
         return Vec::new();
     }
     model
@@ -124,7 +128,7 @@ pub fn load(target: Target, root: &Path) -> (Context, Vec<Seed>) {
                     None => {
                         let src = std::fs::read_to_string(&m).unwrap_or_default();
                         let start = ctx.programs.len();
-                        ctx.programs.extend(lower_all(&src));
+                        ctx.programs.extend(lower_all(&m, &src));
                         models.push((m.clone(), start, ctx.programs.len()));
                         (start, ctx.programs.len())
                     }
@@ -152,7 +156,7 @@ pub fn load(target: Target, root: &Path) -> (Context, Vec<Seed>) {
             files(&root.join("tests/semantics"), &[".sc"], &mut sc);
             for p in sc {
                 let src = std::fs::read_to_string(&p).unwrap_or_default();
-                for prog in lower_all(&src).iter().take(1) {
+                for prog in lower_all(&p, &src).iter().take(1) {
                     let Ok((bl, idx)) = statecheck_symbolic::check::problems(prog, &[]) else {
                         continue;
                     };

@@ -268,7 +268,8 @@ fn spin_accepts(p: &Program, dir: &Path, k: usize) -> Result<(), String> {
     Ok(())
 }
 
-fn kind_code(k: &RuntimeErrorKind) -> (u32, i64) {
+/// A run-time error as the drivers print it: (kind code, value).
+pub fn kind_code(k: &RuntimeErrorKind) -> (u32, i64) {
     match k {
         RuntimeErrorKind::Range { value, .. } => (1, *value),
         RuntimeErrorKind::DivisionByZero => (2, 0),
@@ -277,7 +278,9 @@ fn kind_code(k: &RuntimeErrorKind) -> (u32, i64) {
     }
 }
 
-fn expected(k: usize, r: usize, p: &Program, inputs: &[Vec<i64>], out: &mut String) {
+/// The interpreter's trace lines of run `r` of model `k` (`k r t ok SLOTS…` after every tick,
+/// `k r t err CODE SITE VALUE` at a run-time error, which ends the run), appended to `out`.
+pub fn expected(k: usize, r: usize, p: &Program, inputs: &[Vec<i64>], out: &mut String) {
     let mut m = Machine::new(p);
     for (t, vals) in inputs.iter().enumerate() {
         for (inp, v) in p.inputs.iter().zip(vals) {
@@ -300,10 +303,39 @@ fn expected(k: usize, r: usize, p: &Program, inputs: &[Vec<i64>], out: &mut Stri
     }
 }
 
-struct Case {
-    text: String,
-    p: Program,
-    runs: Vec<Vec<Vec<i64>>>,
+/// One model of a code-generation batch: its text, its lowered program and its input runs
+/// (`runs[r][t][k]`: input `k` at tick `t` of run `r`; every run has the same length).
+pub struct Case {
+    /// The model's text (quoted in failure reports).
+    pub text: String,
+    /// The lowered program.
+    pub p: Program,
+    /// The input vectors of every run.
+    pub runs: Vec<Vec<Vec<i64>>>,
+}
+
+impl Case {
+    /// `runs` runs of `ticks` random input vectors for `p`, drawn from `seed`.
+    pub fn random(text: String, p: Program, seed: u64, runs: usize, ticks: usize) -> Case {
+        let mut g = Gen::new(seed);
+        let runs = (0..runs)
+            .map(|_| {
+                (0..ticks)
+                    .map(|_| {
+                        p.inputs
+                            .iter()
+                            .map(|i| g.value(&p.slots[i.slot as usize]))
+                            .collect()
+                    })
+                    .collect()
+            })
+            .collect();
+        Case { text, p, runs }
+    }
+
+    fn ticks(&self) -> usize {
+        self.runs.first().map_or(0, Vec::len)
+    }
 }
 
 fn c_driver(k: usize, c: &Case) -> String {
@@ -316,8 +348,9 @@ fn c_driver(k: usize, c: &Case) -> String {
         .flatten()
         .map(|v| format!("INT64_C({v})"))
         .collect();
+    let (runs, ticks) = (c.runs.len(), c.ticks());
     let mut s = format!(
-        "#include \"m{k}.c\"\nstatic const int64_t in_{k}[] = {{{}, 0}};\nstatic void run_{k}(void) {{\n    int r, t, st;\n    for (r = 0; r < {RUNS}; r++) {{\n        m{k}_state s; m{k}_inputs i; m{k}_outputs o; int64_t v[M{k}_N_SLOTS]; unsigned j;\n        m{k}_init(&s, &i, &o);\n        for (t = 0; t < {TICKS}; t++) {{\n            const int64_t *x = &in_{k}[(r * {TICKS} + t) * {}];\n            (void)x;\n",
+        "#include \"m{k}.c\"\nstatic const int64_t in_{k}[] = {{{}, 0}};\nstatic void run_{k}(void) {{\n    int r, t, st;\n    for (r = 0; r < {runs}; r++) {{\n        m{k}_state s; m{k}_inputs i; m{k}_outputs o; int64_t v[M{k}_N_SLOTS]; unsigned j;\n        m{k}_init(&s, &i, &o);\n        for (t = 0; t < {ticks}; t++) {{\n            const int64_t *x = &in_{k}[(r * {ticks} + t) * {}];\n            (void)x;\n",
         flat.join(","),
         p.inputs.len()
     );
@@ -347,8 +380,9 @@ fn rust_driver(k: usize, c: &Case) -> String {
         .flatten()
         .map(|v| v.to_string())
         .collect();
+    let (runs, ticks) = (c.runs.len(), c.ticks());
     let mut s = format!(
-        "#[path = \"m{k}.rs\"]\nmod m{k};\nfn run_{k}(out: &mut String) {{\n    const IN: &[i64] = &[{}, 0];\n    for r in 0..{RUNS} {{\n        let (mut s, mut i, mut o) = (m{k}::State::default(), m{k}::Inputs::default(), m{k}::Outputs::default());\n        let mut v = [0i64; m{k}::N_SLOTS];\n        m{k}::init(&mut s, &mut i, &mut o);\n        for t in 0..{TICKS} {{\n            let x = &IN[(r * {TICKS} + t) * {}..];\n            let _ = x;\n",
+        "#[path = \"m{k}.rs\"]\nmod m{k};\nfn run_{k}(out: &mut String) {{\n    const IN: &[i64] = &[{}, 0];\n    for r in 0..{runs} {{\n        let (mut s, mut i, mut o) = (m{k}::State::default(), m{k}::Inputs::default(), m{k}::Outputs::default());\n        let mut v = [0i64; m{k}::N_SLOTS];\n        m{k}::init(&mut s, &mut i, &mut o);\n        for t in 0..{ticks} {{\n            let x = &IN[(r * {ticks} + t) * {}..];\n            let _ = x;\n",
         flat.join(","),
         p.inputs.len()
     );
@@ -389,8 +423,10 @@ fn model_of_line(cases: &[Case], line: &str) -> String {
     cases.get(k).map(|c| c.text.clone()).unwrap_or_default()
 }
 
-/// Compile a batch into one C program (and one Rust program if `rust`) and compare traces.
-fn codegen_batch(cases: &[Case], dir: &Path, rust: bool, rep: &mut Report) {
+/// Compile a batch into one C program (gcc `-std=c99 -Wall -Wextra -Wpedantic -Werror`) and,
+/// if `rust`, one Rust program, in `dir`, run both and compare their traces with the
+/// interpreter's line for line; what differs or does not compile goes to `rep`.
+pub fn codegen_batch(cases: &[Case], dir: &Path, rust: bool, rep: &mut Report) {
     let src = Source::new("random.sc", "");
     let mut want = String::new();
     let (mut c_main, mut rs_main) = (
@@ -424,7 +460,15 @@ fn codegen_batch(cases: &[Case], dir: &Path, rust: bool, rep: &mut Report) {
     let _ = std::fs::write(dir.join("driver.c"), c_main);
     let mut langs = Vec::new();
     let cc = Command::new("gcc")
-        .args(["-std=c99", "-Wall", "-Wextra", "-Werror", "-O0", "-o"])
+        .args([
+            "-std=c99",
+            "-Wall",
+            "-Wextra",
+            "-Wpedantic",
+            "-Werror",
+            "-O0",
+            "-o",
+        ])
         .arg(dir.join("drv_c"))
         .arg(dir.join("driver.c"))
         .output();
@@ -524,27 +568,8 @@ pub fn batch(seed: u64, first: u64, n: u64, rust: bool, spin: bool, dir: &Path) 
                     Err(e) => r.compile_failures.push(format!("spin -a: {e}\n{text}")),
                 }
             }
-            let mut g = Gen::new(model_seed ^ 0xA5A5_0000);
-            let runs = (0..RUNS)
-                .map(|_| {
-                    (0..TICKS)
-                        .map(|_| {
-                            p.inputs
-                                .iter()
-                                .map(|i| g.value(&p.slots[i.slot as usize]))
-                                .collect()
-                        })
-                        .collect()
-                })
-                .collect();
-            (
-                r,
-                Some(Case {
-                    text: text.clone(),
-                    p,
-                    runs,
-                }),
-            )
+            let case = Case::random(text.clone(), p, model_seed ^ 0xA5A5_0000, RUNS, TICKS);
+            (r, Some(case))
         }));
         match caught {
             Ok((r, case)) => {

@@ -2,8 +2,11 @@
 //! parallel states, history, timers, local and input events, choices, priorities, internal and
 //! self transitions, arithmetic that can fail at run time (division by zero, bad shifts, range
 //! errors), `assume`s (input-only and state-dependent), `invariant`/`reachable`/`respond`
-//! properties and, in some models, `ltl`/`ctl`/`fair` declarations. Optionally two instances
-//! connected in a system. (Grown from `crates/codegen/tests/gen/`.)
+//! properties and, in some models, `ltl`/`ctl`/`fair` declarations, a chart parameter (used in
+//! expressions, fixed differently per instance) and time units (`tick 100 ms;`, `after(200
+//! ms)`, `within 300 ms`). Optionally two instances connected in a system. Not generated:
+//! imports (file-level), `component` composites and `plant` charts with `continuous`
+//! variables. Also the generator of the codegen crate's differential test.
 
 use rand::rngs::StdRng;
 use rand::{RngExt, SeedableRng};
@@ -16,6 +19,12 @@ pub struct Gen {
     paths: Vec<String>,
     /// Paths that are inside a parallel state (transitions into them are avoided in regions).
     leaves: Vec<String>,
+    /// The chart has the parameter `k: int[0..3]` (used as an expression leaf).
+    param: bool,
+    /// Properties are being written (system scope: `k` is not visible there).
+    in_props: bool,
+    /// The model declares `tick 100 ms;` and writes delays and bounds in milliseconds.
+    time_units: bool,
 }
 
 impl Gen {
@@ -26,6 +35,9 @@ impl Gen {
             next_state: 0,
             paths: Vec::new(),
             leaves: Vec::new(),
+            param: false,
+            in_props: false,
+            time_units: false,
         }
     }
 
@@ -38,6 +50,9 @@ impl Gen {
     }
 
     fn int_leaf(&mut self) -> String {
+        if self.param && !self.in_props && self.chance(12) {
+            return "k".into();
+        }
         match self.pick(6) {
             0 => "x".into(),
             1 => "y".into(),
@@ -137,7 +152,14 @@ impl Gen {
             0 => "e0 ".into(),
             1 => "e1 ".into(),
             2 => "le ".into(),
-            3 => format!("after({}) ", self.rng.random_range(1..4)),
+            3 => {
+                let n = self.rng.random_range(1..4);
+                if self.time_units {
+                    format!("after({} ms) ", n * 100)
+                } else {
+                    format!("after({n}) ")
+                }
+            }
             4 => "oe ".into(),
             _ => String::new(),
         }
@@ -302,10 +324,13 @@ impl Gen {
                 2 => out.push_str(&format!("  reachable reach{k}: {e};\n")),
                 _ => {
                     let r = qual(self.bool_expr(1).replace("e0", "b"));
-                    out.push_str(&format!(
-                        "  respond resp{k}: {e} => {r} within {};\n",
-                        self.pick(3)
-                    ));
+                    let n = self.pick(3);
+                    let within = if self.time_units {
+                        format!("{} ms", n * 100)
+                    } else {
+                        n.to_string()
+                    };
+                    out.push_str(&format!("  respond resp{k}: {e} => {r} within {within};\n"));
                 }
             }
         }
@@ -331,11 +356,31 @@ impl Gen {
 
     /// A whole model with properties and assumes (and, if `temporal`, temporal properties).
     pub fn model_with(&mut self, props: bool) -> String {
+        if props {
+            self.param = self.chance(25);
+            self.time_units = self.chance(25);
+        }
         let body = self.level("", 0, false);
         let two = self.chance(30);
         let temporal = props && self.chance(20);
+        self.in_props = true;
+        let (decl, args) = if self.param {
+            let (a, b) = (self.pick(4), self.pick(4));
+            (
+                "(k: int[0..3] = 1)".to_string(),
+                [format!("({a})"), format!("(k = {b})")],
+            )
+        } else {
+            (String::new(), [String::new(), String::new()])
+        };
+        let [pa, qa] = args;
+        let tick = if self.time_units {
+            "tick 100 ms;\n"
+        } else {
+            ""
+        };
         let chart = format!(
-            "chart C {{\n  input event e0;\n  input event e1;\n  input a: int[-4..4] = 0;\n  input b: bool = false;\n  input c: int[-2..3] = 1;\n  output x: int[-20..20] = 0;\n  output y: int[0..7] = 0;\n  local f: bool = false;\n  local event le;\n  output event oe;\n  {body}\n}}\n"
+            "{tick}chart C{decl} {{\n  input event e0;\n  input event e1;\n  input a: int[-4..4] = 0;\n  input b: bool = false;\n  input c: int[-2..3] = 1;\n  output x: int[-20..20] = 0;\n  output y: int[0..7] = 0;\n  local f: bool = false;\n  local event le;\n  output event oe;\n  {body}\n}}\n"
         );
         if two {
             let sys_props = if props {
@@ -343,10 +388,10 @@ impl Gen {
             } else {
                 String::new()
             };
-            format!("{chart}\nsystem Two {{\n  instance p: C;\n  instance q: C;\n  connect p.x -> q.c;\n  connect p.oe -> q.e1;\n{sys_props}}}\n")
+            format!("{chart}\nsystem Two {{\n  instance p: C{pa};\n  instance q: C{qa};\n  connect p.x -> q.c;\n  connect p.oe -> q.e1;\n{sys_props}}}\n")
         } else if props {
             let sys_props = self.properties("p.", temporal);
-            format!("{chart}\nsystem One {{\n  instance p: C;\n{sys_props}}}\n")
+            format!("{chart}\nsystem One {{\n  instance p: C{pa};\n{sys_props}}}\n")
         } else {
             chart
         }

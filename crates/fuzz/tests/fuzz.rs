@@ -95,3 +95,25 @@ fn random_models_agree_everywhere() {
     assert_eq!(r.models, 8);
     assert!(r.c_models + r.rejected == 8, "{r:?}");
 }
+
+#[test]
+fn generated_models_with_parameters_and_time_units_are_accepted() {
+    // The generator's newer constructs: a chart parameter fixed per instance and durations in
+    // milliseconds under `tick 100 ms;`. Every generated model is accepted by the checker
+    // (only E0104, a constant out of range, may reject one), and both constructs occur (each
+    // is drawn with chance 1/4, so 200 models without one has probability (3/4)^200).
+    let (mut params, mut times, mut checked) = (0, 0, 0);
+    for seed in 0..200u64 {
+        let text = statecheck_fuzz::gen::Gen::new(seed).model_with(true);
+        params += usize::from(text.contains("chart C(k: int[0..3] = 1)"));
+        times += usize::from(text.starts_with("tick 100 ms;"));
+        match statecheck_fuzz::diff::lower(&text) {
+            Ok(_) => checked += 1,
+            Err(e) => assert!(e.contains("E0104"), "{e}\n{text}"),
+        }
+    }
+    assert!(
+        params > 0 && times > 0 && checked > 100,
+        "{params} {times} {checked}"
+    );
+}

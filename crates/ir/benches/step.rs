@@ -31,12 +31,14 @@ fn main() {
         .cloned()
         .unwrap_or_else(|| format!("{root}/examples/fam/fam.sc"));
     let source = std::fs::read_to_string(&path).expect("model file readable");
-    let (file, diags) = statecheck_syntax::parse(&source);
+    // Follow the model's imports (fam.sc imports lib/).
+    let program =
+        statecheck_model::imports::load_with(&path, source, |k| std::fs::read_to_string(k).ok());
     assert!(
-        !diags.iter().any(|d| d.is_error()),
-        "{path} has syntax errors"
+        !program.diags.iter().any(|d| d.is_error()),
+        "{path} has syntax or import errors"
     );
-    let (model, diags) = statecheck_model::check(&file);
+    let (model, diags) = statecheck_model::check(&program.file);
     assert!(!diags.iter().any(|d| d.is_error()), "{path} has errors");
     let sys = match args.get(1) {
         Some(name) => model.system(name).expect("system exists"),

@@ -14,6 +14,7 @@ mod interp;
 mod layout;
 pub mod lower;
 mod program;
+pub mod symmetry;
 pub mod temporal;
 pub mod time;
 pub mod verdict;

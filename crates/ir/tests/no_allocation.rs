@@ -34,8 +34,10 @@ static GLOBAL: Counting = Counting;
 fn a_step_allocates_nothing() {
     let path = concat!(env!("CARGO_MANIFEST_DIR"), "/../../examples/fam/fam.sc");
     let source = std::fs::read_to_string(path).expect("the FAM example is readable");
-    let (file, _) = statecheck_syntax::parse(&source);
-    let (model, _) = statecheck_model::check(&file);
+    // fam.sc imports the FAM chart from lib/: follow its imports.
+    let program =
+        statecheck_model::imports::load_with(path, source, |k| std::fs::read_to_string(k).ok());
+    let (model, _) = statecheck_model::check(&program.file);
     let sys = model
         .systems
         .iter()

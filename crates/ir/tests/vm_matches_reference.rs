@@ -38,9 +38,12 @@ fn compiled_code_matches_the_reference_evaluator_on_every_model() {
     };
     for f in &files {
         let src = std::fs::read_to_string(f).expect("readable");
-        let (file, d1) = statecheck_syntax::parse(&src);
-        let (model, d2) = statecheck_model::check(&file);
-        if d1.iter().chain(&d2).any(|d| d.is_error()) {
+        // Follow imports (examples/fam's models import lib/).
+        let program = statecheck_model::imports::load_with(&f.to_string_lossy(), src, |k| {
+            std::fs::read_to_string(k).ok()
+        });
+        let (model, d2) = statecheck_model::check(&program.file);
+        if program.diags.iter().chain(&d2).any(|d| d.is_error()) {
             continue; // malformed on purpose (diagnostics tests)
         }
         for sys in &model.systems {

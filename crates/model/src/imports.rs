@@ -60,25 +60,36 @@ pub struct MemoryResolver {
     pub files: BTreeMap<String, String>,
 }
 
+/// `path` joined to the directory of the key `from` (`/`-separated, `..` and `.` folded); with
+/// `keep_root`, a leading `/` stays (file-system paths), else it is dropped (memory keys).
+fn join_key(from: &str, path: &str, keep_root: bool) -> String {
+    let dir = from.rsplit_once('/').map_or("", |(d, _)| d);
+    let joined = if dir.is_empty() || path.starts_with('/') {
+        path.to_string()
+    } else {
+        format!("{dir}/{path}")
+    };
+    let mut parts: Vec<&str> = Vec::new();
+    for p in joined.split('/') {
+        match p {
+            "." | "" => {}
+            ".." => {
+                parts.pop();
+            }
+            p => parts.push(p),
+        }
+    }
+    let key = parts.join("/");
+    if keep_root && joined.starts_with('/') {
+        format!("/{key}")
+    } else {
+        key
+    }
+}
+
 impl Resolver for MemoryResolver {
     fn resolve(&mut self, from: &str, path: &str) -> Result<FileText, String> {
-        let dir = from.rsplit_once('/').map_or("", |(d, _)| d);
-        let joined = if dir.is_empty() || path.starts_with('/') {
-            path.to_string()
-        } else {
-            format!("{dir}/{path}")
-        };
-        let mut parts: Vec<&str> = Vec::new();
-        for p in joined.split('/') {
-            match p {
-                "." | "" => {}
-                ".." => {
-                    parts.pop();
-                }
-                p => parts.push(p),
-            }
-        }
-        let key = parts.join("/");
+        let key = join_key(from, path, false);
         match self.files.get(&key) {
             Some(text) => Ok(FileText {
                 key: key.clone(),
@@ -88,6 +99,38 @@ impl Resolver for MemoryResolver {
             None => Err(format!("no file `{key}`")),
         }
     }
+}
+
+/// A resolver over a function that reads a file: `path` is joined to the importing key's
+/// directory as by [`MemoryResolver`] (a leading `/` kept, so keys may be absolute file-system
+/// paths) and `read` returns that key's text, or `None`. It searches only the importing file's
+/// directory (no library path): for tests, benchmarks and tools that read model files
+/// themselves; the CLI's resolver also searches `--lib` and `STATECHECK_PATH`.
+pub struct ReadResolver<F>(pub F);
+
+impl<F: FnMut(&str) -> Option<String>> Resolver for ReadResolver<F> {
+    fn resolve(&mut self, from: &str, path: &str) -> Result<FileText, String> {
+        let key = join_key(from, path, true);
+        match (self.0)(&key) {
+            Some(text) => Ok(FileText {
+                key: key.clone(),
+                name: key,
+                text,
+            }),
+            None => Err(format!("cannot read `{key}`")),
+        }
+    }
+}
+
+/// The program of the file `path` (its text `text`), its imports read with `read` through a
+/// [`ReadResolver`] — e.g. `load_with(p, text, |k| std::fs::read_to_string(k).ok())`.
+pub fn load_with<F: FnMut(&str) -> Option<String>>(path: &str, text: String, read: F) -> Program {
+    let root = FileText {
+        key: path.to_string(),
+        name: path.to_string(),
+        text,
+    };
+    load(root, &mut ReadResolver(read))
 }
 
 /// Where one file sits in [`Sources::text`].

@@ -16,6 +16,7 @@ mod expr;
 pub mod formula;
 pub mod hybrid;
 pub mod imports;
+mod interleave;
 pub mod lint;
 pub mod model;
 pub mod ops;
@@ -28,6 +29,7 @@ mod suggest;
 mod system;
 pub mod types;
 
+pub use interleave::SCHED;
 pub use model::*;
 pub use types::{EnumId, Type};
 
@@ -57,12 +59,43 @@ pub fn check(file: &ast::File) -> (Model, Vec<Diagnostic>) {
         Some(c) => (&c.file, c.origins.as_slice()),
         None => (file, &[][..]),
     };
+    // Parameterised components become one component per argument list, arrays of
+    // components get literal lengths (`composite/params.rs`).
+    let comp_params = {
+        let view = globals.clone();
+        let mut sub = ExprChecker {
+            globals: &view,
+            sink: Sink {
+                diags: Vec::new(),
+                muted: 0,
+            },
+            next_local: 0,
+        };
+        let e = composite::expand_params(file, &mut sub);
+        early.extend(sub.sink.diags);
+        e
+    };
+    let file = comp_params.as_ref().unwrap_or(file);
     // Component instances become their inner instances, systems flat (`composite/`).
     let flattened = composite::flatten(file, &mut early);
     let (file, sys_origins) = match &flattened {
         Some(f) => (&f.file, sys_origins),
         None => (file, sys_origins),
     };
+    // Interleaved systems get their scheduler input (`interleave.rs`).
+    let interleaved = {
+        let view = globals.clone();
+        let mut sub = ExprChecker {
+            globals: &view,
+            sink: Sink {
+                diags: Vec::new(),
+                muted: 0,
+            },
+            next_local: 0,
+        };
+        interleave::expand(file, &mut sub, &mut early)
+    };
+    let file = interleaved.as_ref().unwrap_or(file);
     // Parameterised charts become one ordinary chart per argument list (`params.rs`).
     let expanded = {
         let view = globals.clone();
@@ -93,7 +126,23 @@ pub fn check(file: &ast::File) -> (Model, Vec<Diagnostic>) {
             }
             (&e.file, e.origins.as_slice())
         }
-        None => (file, &[][..]),
+        None => {
+            // The scheduler charts of interleaved systems are new charts.
+            if interleaved.is_some() {
+                globals.chart_ids.clear();
+                let charts = file.items.iter().filter_map(|i| match i {
+                    ast::Item::Chart(c) => Some(c),
+                    _ => None,
+                });
+                for (id, c) in charts.enumerate() {
+                    globals
+                        .chart_ids
+                        .entry(c.name.name.clone())
+                        .or_insert(id as ChartId);
+                }
+            }
+            (file, &[][..])
+        }
     };
     // Copies of parameterised charts with continuous variables are discretized now, each
     // with its arguments; a copy with placeholder values only declares the variables.
@@ -194,7 +243,9 @@ pub fn check(file: &ast::File) -> (Model, Vec<Diagnostic>) {
     }
     // Every top-level chart can also run alone, as a system of one instance named like it.
     for (id, c) in chart_asts.iter().enumerate() {
+        // (The scheduler chart of an interleaved system, `sched(k)`, does not run alone.)
         if system_names.contains_key(&c.name.name)
+            || c.name.name.starts_with("sched(")
             || !matches!(origin(id), params::Origin::Plain | params::Origin::Defaults)
         {
             continue;
@@ -205,6 +256,7 @@ pub fn check(file: &ast::File) -> (Model, Vec<Diagnostic>) {
         }
         systems.push(System {
             name: c.name.name.clone(),
+            interleaved: None,
             implicit: true,
             instances: vec![Instance {
                 name: c.name.name.clone(),
@@ -237,6 +289,11 @@ pub fn check(file: &ast::File) -> (Model, Vec<Diagnostic>) {
         charts,
         systems,
         tick_ms: globals_ref.tick_ms,
+        hybrid: discretized
+            .iter()
+            .chain(copies.iter())
+            .flat_map(|d| d.plans.iter().cloned())
+            .collect(),
     };
     let mut diags = ck.sink.diags;
     cascade::suppress(file, &mut diags);
@@ -252,6 +309,7 @@ pub fn check(file: &ast::File) -> (Model, Vec<Diagnostic>) {
     if expanded.is_some() || configured.is_some() || flattened.is_some() {
         params::dedup(&mut diags);
         components::suppress_slot_cascades(file, &mut diags);
+        composite::suppress_cascades(&mut diags);
     }
     (model, diags)
 }

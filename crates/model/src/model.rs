@@ -29,6 +29,10 @@ pub struct Model {
     pub systems: Vec<System>,
     /// Length of one tick in milliseconds, if declared.
     pub tick_ms: Option<i64>,
+    /// The continuous variables of every discretized chart, by the chart's name in
+    /// [`Model::charts`] (a parameterised chart's copies each with their values:
+    /// `Mover(20)`), for `statecheck analyse` (docs/hybrid.md).
+    pub hybrid: Vec<crate::hybrid::ChartPlans>,
 }
 
 /// `enum Name { A, B }`
@@ -435,8 +439,23 @@ pub struct System {
     pub properties: Vec<Property>,
     /// State-based synthesis requirements (`docs/synthesis.md`).
     pub requirements: Vec<Requirement>,
+    /// `system S interleaved { … }`: which unit each instance belongs to; `None` for the
+    /// synchronous default.
+    pub interleaved: Option<Interleaving>,
     /// Where it was declared.
     pub span: Span,
+}
+
+/// Interleaved composition (`docs/components.md`): in each tick only the unit the scheduler
+/// input names steps.
+#[derive(Clone, Debug)]
+pub struct Interleaving {
+    /// The scheduler instance; its only variable, `unit`, is the free input naming the unit.
+    pub scheduler: u32,
+    /// Each instance's unit (`None` for the scheduler and observers, which step every tick).
+    pub unit: Vec<Option<u32>>,
+    /// Each unit's name (`ctrl`, `storage`, `fam[0]`), in execution order.
+    pub units: Vec<String>,
 }
 
 /// A checked state-based synthesis requirement.

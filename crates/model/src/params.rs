@@ -14,7 +14,18 @@ use crate::scope::Scope;
 use crate::types::Type;
 use statecheck_base::{Diagnostic, Span};
 use statecheck_syntax::ast;
+use statecheck_syntax::ast::visit_mut::{walk_expr, VisitMut};
 use std::collections::HashMap;
+
+/// What declares parameters: a chart or a component.
+pub(crate) struct Decl<'x> {
+    /// `"chart"` or `"component"`, for the messages.
+    pub kind: &'static str,
+    /// Its name.
+    pub name: &'x ast::Ident,
+    /// Its parameters.
+    pub params: &'x [ast::ChartParam],
+}
 
 /// Why a chart of the expanded file exists.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -43,7 +54,7 @@ pub(crate) struct Expanded {
 
 /// A parameter's value.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-enum Value {
+pub(crate) enum Value {
     Int(i64),
     Bool(bool),
     Enum(u32, i64),
@@ -116,7 +127,12 @@ pub(crate) fn expand(file: &ast::File, ck: &mut ExprChecker<'_>) -> Option<Expan
                 continue;
             }
             let sig = &sigs[c.name.name.as_str()];
-            let Some(values) = bind(c, sig, &args, inst, ck) else {
+            let decl = Decl {
+                kind: "chart",
+                name: &c.name,
+                params: &c.params,
+            };
+            let Some(values) = bind(&decl, sig, &args, inst, ck) else {
                 continue; // reported; the instance keeps the plain (placeholder) copy
             };
             let defaults: Option<Vec<Value>> = sig.iter().map(|(_, d)| *d).collect();
@@ -138,7 +154,19 @@ pub(crate) fn expand(file: &ast::File, ck: &mut ExprChecker<'_>) -> Option<Expan
     for item in &file.items {
         match item {
             ast::Item::Chart(c) if !c.params.is_empty() => {
-                let sig = &sigs[c.name.name.as_str()];
+                let first = charts
+                    .get(c.name.name.as_str())
+                    .is_some_and(|f| std::ptr::eq(*f, c));
+                let sig = match sigs.get(c.name.name.as_str()) {
+                    Some(sig) if first => sig.clone(),
+                    // A second chart of the same name (E0102, reported later) whose first has
+                    // no parameters or others: its own placeholders, no defaults evaluated.
+                    _ => c
+                        .params
+                        .iter()
+                        .map(|p| (ck.resolve_type(&p.ty), None))
+                        .collect(),
+                };
                 let defaults: Option<Vec<Value>> = sig.iter().map(|(_, d)| *d).collect();
                 let (plain, origin) = match defaults {
                     Some(d) => (d, Origin::Defaults),
@@ -156,7 +184,12 @@ pub(crate) fn expand(file: &ast::File, ck: &mut ExprChecker<'_>) -> Option<Expan
                     ck,
                 )));
                 origins.push(origin);
-                for (values, at) in uses.get(c.name.name.as_str()).into_iter().flatten() {
+                let uses_here = if first {
+                    uses.get(c.name.name.as_str())
+                } else {
+                    None
+                };
+                for (values, at) in uses_here.into_iter().flatten() {
                     let name = copy_name(c, values, ck);
                     out.items
                         .push(ast::Item::Chart(specialise(c, values, name, ck)));
@@ -214,9 +247,9 @@ fn check_param_names(c: &ast::Chart, ck: &mut ExprChecker<'_>) {
 }
 
 /// The values of an instance's arguments, positional then named, with defaults for the rest;
-/// `None` after reporting a missing, extra or bad argument.
-fn bind(
-    c: &ast::Chart,
+/// `None` after reporting a missing, extra or bad argument (E0150, E0151).
+pub(crate) fn bind(
+    c: &Decl<'_>,
     sig: &[(Type, Option<Value>)],
     args: &[ast::Arg],
     inst: &ast::Instance,
@@ -234,7 +267,8 @@ fn bind(
                         Diagnostic::error(
                             "E0150",
                             format!(
-                                "chart `{}` takes {} parameter{}, this is argument {positional}",
+                                "{} `{}` takes {} parameter{}, this is argument {positional}",
+                                c.kind,
                                 c.name.name,
                                 c.params.len(),
                                 if c.params.len() == 1 { "" } else { "s" }
@@ -242,7 +276,7 @@ fn bind(
                             a.span,
                         )
                         .with_label("extra argument")
-                        .with_secondary(c.name.span, "chart declared here"),
+                        .with_secondary(c.name.span, format!("{} declared here", c.kind)),
                     );
                     ok = false;
                     continue;
@@ -255,16 +289,16 @@ fn bind(
                     let names = c.params.iter().map(|p| p.name.name.as_str());
                     let hint = match crate::suggest::closest(&n.name, names) {
                         Some(s) => format!("did you mean `{s}`?"),
-                        None => format!("the parameters are: {}", param_list(c)),
+                        None => format!("the parameters are: {}", param_list(c.params)),
                     };
                     ck.sink.push(
                         Diagnostic::error(
                             "E0150",
-                            format!("chart `{}` has no parameter `{}`", c.name.name, n.name),
+                            format!("{} `{}` has no parameter `{}`", c.kind, c.name.name, n.name),
                             n.span,
                         )
                         .with_label("unknown parameter")
-                        .with_secondary(c.name.span, "chart declared here")
+                        .with_secondary(c.name.span, format!("{} declared here", c.kind))
                         .with_hint(hint),
                     );
                     ok = false;
@@ -292,7 +326,7 @@ fn bind(
         let (ty, default) = sig[i];
         match given[i] {
             Some((a, _)) => {
-                let what = format!("argument `{}` of chart `{}`", p.name.name, c.name.name);
+                let what = format!("argument `{}` of {} `{}`", p.name.name, c.kind, c.name.name);
                 match value_of(ck, &a.value, ty, &what) {
                     Some(v) => values.push(v),
                     None => ok = false,
@@ -307,8 +341,8 @@ fn bind(
                             Diagnostic::error(
                                 "E0151",
                                 format!(
-                                    "instance `{}` gives no value for parameter `{}` of chart `{}`",
-                                    inst.name.name, p.name.name, c.name.name
+                                    "instance `{}` gives no value for parameter `{}` of {} `{}`",
+                                    inst.name.name, p.name.name, c.kind, c.name.name
                                 ),
                                 at,
                             )
@@ -321,7 +355,7 @@ fn bind(
                                 "give it: `{}({} = …)`; the parameters are: {}",
                                 c.name.name,
                                 p.name.name,
-                                param_list(c)
+                                param_list(c.params)
                             )),
                         );
                     }
@@ -341,8 +375,8 @@ fn args_span(inst: &ast::Instance, args: &[ast::Arg]) -> Span {
     Span::new(inst.chart.span.start as usize, end as usize)
 }
 
-fn param_list(c: &ast::Chart) -> String {
-    c.params
+fn param_list(params: &[ast::ChartParam]) -> String {
+    params
         .iter()
         .map(|p| format!("`{}`", p.name.name))
         .collect::<Vec<_>>()
@@ -350,7 +384,12 @@ fn param_list(c: &ast::Chart) -> String {
 }
 
 /// A constant argument (or default) of type `ty`; `None` after reporting why not.
-fn value_of(ck: &mut ExprChecker<'_>, e: &ast::Expr, ty: Type, what: &str) -> Option<Value> {
+pub(crate) fn value_of(
+    ck: &mut ExprChecker<'_>,
+    e: &ast::Expr,
+    ty: Type,
+    what: &str,
+) -> Option<Value> {
     let empty = Scope {
         chart: None,
         instances: None,
@@ -410,8 +449,13 @@ fn show(v: Value, ck: &ExprChecker<'_>) -> String {
 
 /// `Sensor(0, 9)`: the name of a copy (not an identifier, so it clashes with nothing).
 fn copy_name(c: &ast::Chart, values: &[Value], ck: &ExprChecker<'_>) -> String {
+    named_copy(&c.name.name, values, ck)
+}
+
+/// `Name(0, 9)`: a copy's name from its declaration's name and argument values.
+pub(crate) fn named_copy(name: &str, values: &[Value], ck: &ExprChecker<'_>) -> String {
     let vs: Vec<String> = values.iter().map(|v| show(*v, ck)).collect();
-    format!("{}({})", c.name.name, vs.join(", "))
+    format!("{name}({})", vs.join(", "))
 }
 
 /// The chart with every use of a parameter replaced by its value.
@@ -427,23 +471,12 @@ fn specialise(c: &ast::Chart, values: &[Value], name: String, ck: &ExprChecker<'
             .map(|(p, v)| (p.name.name.clone(), literal(*v, ck)))
             .collect(),
     };
-    for v in &mut out.vars {
-        if let Some(t) = &mut v.ty {
-            s.ty(t);
-        }
-        if let Some(e) = &mut v.init {
-            s.expr(e);
-        }
-    }
-    s.body(&mut out.body);
-    for p in &mut out.properties {
-        s.property(p);
-    }
+    s.visit_chart(&mut out);
     out
 }
 
 /// The value as an expression: a literal, or `Enum.LITERAL` for an enum.
-fn literal(v: Value, ck: &ExprChecker<'_>) -> Literal {
+pub(crate) fn literal(v: Value, ck: &ExprChecker<'_>) -> Literal {
     match v {
         Value::Int(n) => Literal::Int(n),
         Value::Bool(b) => Literal::Bool(b),
@@ -459,8 +492,9 @@ fn literal(v: Value, ck: &ExprChecker<'_>) -> Literal {
     }
 }
 
+/// A parameter's value as the expression that replaces the parameter's uses.
 #[derive(Clone)]
-enum Literal {
+pub(crate) enum Literal {
     Int(i64),
     Bool(bool),
     Enum(String, String),
@@ -486,227 +520,26 @@ impl Literal {
     }
 }
 
-/// Replaces parameter names by their values throughout a chart.
-struct Subst {
-    names: HashMap<String, Literal>,
+/// Replaces parameter names by their values throughout a chart (every expression the AST
+/// walk visits: types, initial values, guards, actions, delays, hybrid bounds, properties).
+pub(crate) struct Subst {
+    /// Each parameter's value.
+    pub names: HashMap<String, Literal>,
 }
 
-impl Subst {
-    fn expr(&mut self, e: &mut ast::Expr) {
-        match e {
-            ast::Expr::Path(p) => {
-                if let [seg] = p.segments.as_slice() {
-                    if seg.index.is_none() {
-                        if let Some(l) = self.names.get(&seg.name.name) {
-                            *e = l.at(p.span);
-                            return;
-                        }
-                    }
-                }
-                self.path(p);
-            }
-            ast::Expr::In(..) | ast::Expr::Int(..) | ast::Expr::Bool(..) | ast::Expr::Error(_) => {}
-            ast::Expr::Call { args, .. } => args.iter_mut().for_each(|a| self.expr(a)),
-            ast::Expr::Unary(_, a, _) => self.expr(a),
-            ast::Expr::Binary(_, a, b, _) => {
-                self.expr(a);
-                self.expr(b);
-            }
-            ast::Expr::If(c, a, b, _) => {
-                self.expr(c);
-                self.expr(a);
-                self.expr(b);
-            }
-        }
-    }
-
-    fn path(&mut self, p: &mut ast::Path) {
-        for seg in &mut p.segments {
-            if let Some(ast::Index::At(e)) = &mut seg.index {
-                self.expr(e);
-            }
-        }
-    }
-
-    fn ty(&mut self, t: &mut ast::TypeExpr) {
-        if let ast::TypeExpr::Range { lo, hi, .. } = t {
-            self.expr(lo);
-            self.expr(hi);
-        }
-    }
-
-    fn block(&mut self, b: &mut ast::Block) {
-        for s in &mut b.stmts {
-            match s {
-                ast::Stmt::Assign { value, .. } => self.expr(value),
-                ast::Stmt::Raise { .. } => {}
-                ast::Stmt::If {
-                    cond,
-                    then,
-                    otherwise,
-                    ..
-                } => {
-                    self.expr(cond);
-                    self.block(then);
-                    if let Some(o) = otherwise {
-                        self.block(o);
+impl VisitMut for Subst {
+    fn visit_expr(&mut self, e: &mut ast::Expr) {
+        if let ast::Expr::Path(p) = e {
+            if let [seg] = p.segments.as_slice() {
+                if seg.index.is_none() {
+                    if let Some(l) = self.names.get(&seg.name.name) {
+                        *e = l.at(p.span);
+                        return;
                     }
                 }
             }
         }
-    }
-
-    fn body(&mut self, b: &mut ast::StateBody) {
-        for blk in b.entry.iter_mut().chain(&mut b.during).chain(&mut b.exit) {
-            self.block(blk);
-        }
-        for h in &mut b.hybrid {
-            self.hybrid(h);
-        }
-        for i in &mut b.initial {
-            if let Some(a) = &mut i.action {
-                self.block(a);
-            }
-        }
-        for s in &mut b.states {
-            self.body(&mut s.body);
-        }
-        for r in &mut b.regions {
-            self.body(&mut r.body);
-        }
-        for j in &mut b.junctions {
-            self.branches(&mut j.branches);
-        }
-        for t in &mut b.transitions {
-            if let Some(ast::Trigger::After { delay, .. }) = &mut t.trigger {
-                match delay {
-                    ast::Delay::Ticks(e) => self.expr(e),
-                    ast::Delay::Time(d) => self.expr(&mut d.amount),
-                }
-            }
-            if let Some(g) = &mut t.guard {
-                self.expr(g);
-            }
-            if let Some(a) = &mut t.action {
-                self.block(a);
-            }
-            if let Some(target) = &mut t.target {
-                self.target(target);
-            }
-        }
-    }
-
-    /// A continuous-variable element (`docs/hybrid.md`): bounds, cells and speeds may name
-    /// parameters.
-    fn hybrid(&mut self, h: &mut ast::HybridElem) {
-        match h {
-            ast::HybridElem::Continuous { lo, hi, init, .. } => {
-                self.expr(lo);
-                self.expr(hi);
-                if let Some(i) = init {
-                    self.expr(i);
-                }
-            }
-            ast::HybridElem::Grid { cells, .. } => {
-                if let Some(c) = cells {
-                    self.expr(c);
-                }
-            }
-            ast::HybridElem::Sensor { lo, hi, .. } => {
-                self.expr(lo);
-                self.expr(hi);
-            }
-            ast::HybridElem::Der { rate, .. } => match rate {
-                ast::SpeedExpr::Constant(s) => self.speed(s),
-                ast::SpeedExpr::Profile(segs, last) => {
-                    for (s, d) in segs.iter_mut() {
-                        self.speed(s);
-                        self.expr(&mut d.amount);
-                    }
-                    self.speed(last);
-                }
-            },
-        }
-    }
-
-    fn speed(&mut self, s: &mut ast::Speed) {
-        for n in std::iter::once(&mut s.num).chain(s.den.as_mut()) {
-            if let ast::SpeedNumber::Expr(e) = n {
-                self.expr(e);
-            }
-        }
-    }
-
-    fn target(&mut self, t: &mut ast::Target) {
-        if let ast::Target::Choice { branches, .. } = t {
-            self.branches(branches);
-        }
-    }
-
-    fn branches(&mut self, bs: &mut [ast::Branch]) {
-        for b in bs {
-            if let Some(g) = &mut b.guard {
-                self.expr(g);
-            }
-            if let Some(a) = &mut b.action {
-                self.block(a);
-            }
-            self.target(&mut b.target);
-        }
-    }
-
-    fn property(&mut self, p: &mut ast::Property) {
-        match &mut p.kind {
-            ast::PropertyKind::Invariant { expr, assuming } => {
-                self.expr(expr);
-                if let Some(a) = assuming {
-                    self.expr(a);
-                }
-            }
-            ast::PropertyKind::Reachable { expr } | ast::PropertyKind::Nonblocking { expr } => {
-                self.expr(expr)
-            }
-            ast::PropertyKind::Respond {
-                trigger,
-                response,
-                within,
-            } => {
-                self.expr(trigger);
-                self.expr(response);
-                match within {
-                    ast::Delay::Ticks(e) => self.expr(e),
-                    ast::Delay::Time(d) => self.expr(&mut d.amount),
-                }
-            }
-            ast::PropertyKind::RespondEventually { trigger, response } => {
-                self.expr(trigger);
-                self.expr(response);
-            }
-            ast::PropertyKind::Ltl { formula } | ast::PropertyKind::Ctl { formula } => {
-                self.formula(formula)
-            }
-            ast::PropertyKind::Fair { trigger, expr } => {
-                if let Some(t) = trigger {
-                    self.expr(t);
-                }
-                self.expr(expr);
-            }
-        }
-    }
-
-    fn formula(&mut self, f: &mut ast::Formula) {
-        match f {
-            ast::Formula::Atom(e) => self.expr(e),
-            ast::Formula::Not(a, _) | ast::Formula::Unary(_, a, _) => self.formula(a),
-            ast::Formula::And(a, b, _)
-            | ast::Formula::Or(a, b, _)
-            | ast::Formula::Implies(a, b, _)
-            | ast::Formula::Binary(_, a, b, _)
-            | ast::Formula::QuantUntil(_, a, b, _) => {
-                self.formula(a);
-                self.formula(b);
-            }
-        }
+        walk_expr(self, e);
     }
 }
 

@@ -256,9 +256,14 @@ pub(crate) fn check_system(
             span: r.span,
         })
         .collect();
+    let interleaved = s
+        .interleaved
+        .then(|| interleaving(&instances, &order, s.observers.len()))
+        .flatten();
     System {
         name: s.name.name.clone(),
         implicit: false,
+        interleaved,
         instances,
         connections,
         order,
@@ -277,6 +282,8 @@ fn check_connections(
     instances: &[Instance],
 ) -> Vec<Connection> {
     let mut out: Vec<Connection> = Vec::new();
+    // Each connected input and its connection's index in `out`: one look-up per connection.
+    let mut seen: std::collections::HashMap<(u32, u32), usize> = Default::default();
     for c in &s.connections {
         let (Some(from), Some(to)) = (
             endpoint(ck, scope, &c.from, false),
@@ -344,7 +351,7 @@ fn check_connections(
                     continue;
                 }
             }
-            if let Some(prev) = out.iter().find(|o| o.to == (ti, tv)) {
+            if let Some(prev) = seen.get(&(ti, tv)).map(|&k| &out[k]) {
                 ck.sink.push(
                     Diagnostic::error(
                         "E0123",
@@ -366,6 +373,7 @@ fn check_connections(
                         ),
                 );
             }
+            seen.insert((ti, tv), out.len());
             out.push(Connection {
                 from: (fi, fv),
                 to: (ti, tv),
@@ -507,4 +515,39 @@ pub(crate) fn endpoint(
         }
     };
     Some(insts.into_iter().map(|i| (i, v)).collect())
+}
+
+/// The units of an interleaved system, numbered in execution order: each instance's
+/// [`crate::interleave::unit_key`]; the scheduler and the observers (the last `observers`
+/// instances) belong to none. `None` when the scheduler is missing (an error reported).
+fn interleaving(
+    instances: &[Instance],
+    order: &[u32],
+    observers: usize,
+) -> Option<crate::model::Interleaving> {
+    let scheduler = instances
+        .iter()
+        .position(|i| i.name == crate::interleave::SCHED)? as u32;
+    let first_observer = instances.len().saturating_sub(observers);
+    let mut unit = vec![None; instances.len()];
+    let mut units: Vec<String> = Vec::new();
+    for &i in order {
+        if i == scheduler || i as usize >= first_observer {
+            continue;
+        }
+        let key = crate::interleave::unit_key(&instances[i as usize].name);
+        let u = match units.iter().position(|k| k == key) {
+            Some(u) => u,
+            None => {
+                units.push(key.to_string());
+                units.len() - 1
+            }
+        };
+        unit[i as usize] = Some(u as u32);
+    }
+    Some(crate::model::Interleaving {
+        scheduler,
+        unit,
+        units,
+    })
 }

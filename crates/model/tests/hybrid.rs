@@ -236,3 +236,86 @@ plant chart P {
     assert_eq!(ev[0].ticks, r(3, 2));
     assert_eq!(ev[0].model_tick, Some(2));
 }
+
+/// A zone event: (sensor, entered, seconds, expected tick, model tick, on grid).
+type ZoneRow = (usize, bool, Ratio, Option<u64>, Option<u64>, bool);
+
+#[test]
+fn zone_entries_and_departures_of_a_two_speed_profile() {
+    // Start-up at 1 unit/s for 4 s, then 5 units/s; tick 200 ms, a zone [10 .. 20] and a
+    // zone [0 .. 2]. The state is active from tick 0, so the motion starts at 0 s:
+    // d(t) = t for t <= 4, 4 + 5 (t - 4) after.
+    // - [0 .. 2] left when x passes 2: t = 2 s = tick 10 (the sensor reads false from 11).
+    // - [10 .. 20] entered at x = 10: 4 + 6/5 = 5.2 s = tick 26.
+    // - [10 .. 20] left at x = 20: 4 + 16/5 = 7.2 s = tick 36 (false from tick 37).
+    // The motion runs 40 ticks (modes[1..=40] = 1), far enough for all three.
+    let src = "tick 200 ms;
+plant chart P {
+  output low: bool;
+  output mid: bool;
+  continuous x: [0 .. 100] = 0;
+  sensor low = x in [0 .. 2];
+  sensor mid = x in [10 .. 20];
+  initial Go;
+  state Go { der(x) = profile(1 for 4 s, 5); }
+}";
+    let c = plans(src);
+    let p = &c[0].plans[0];
+    let tick = r(1, 5);
+    let modes: Vec<i64> = (0..=40).map(|k| i64::from(k > 0)).collect();
+    // The discretized sensors after each tick as the derivation says they should read; a
+    // model one tick late on `mid`'s entry (true from 27) is reported off the grid.
+    let low: Vec<i64> = (0..=40).map(|k| i64::from(k <= 10)).collect();
+    let mid: Vec<i64> = (0..=40)
+        .map(|k| i64::from((26..=36).contains(&k)))
+        .collect();
+    let late: Vec<i64> = (0..=40)
+        .map(|k| i64::from((27..=36).contains(&k)))
+        .collect();
+    let rows = |ev: Vec<analyse::ZoneEvent>| -> Vec<ZoneRow> {
+        ev.iter()
+            .map(|e| {
+                (
+                    e.sensor,
+                    e.entered,
+                    e.seconds,
+                    e.expected_tick,
+                    e.model_tick,
+                    e.on_grid(),
+                )
+            })
+            .collect()
+    };
+    assert_eq!(
+        rows(analyse::zone_events(p, tick, &modes, &[low.clone(), mid])),
+        vec![
+            (0, false, Ratio::int(2), Some(11), Some(11), true),
+            (1, true, r(26, 5), Some(26), Some(26), true),
+            (1, false, r(36, 5), Some(37), Some(37), true),
+        ]
+    );
+    let got = rows(analyse::zone_events(p, tick, &modes, &[low, late]));
+    assert_eq!(got[1], (1, true, r(26, 5), Some(26), Some(27), false));
+}
+
+#[test]
+fn constants_in_temporal_formulas_are_critical_points() {
+    // 4 cells of 25; `G p.x <= 30` (ltl) and `AG (p.x != 60)` (ctl) compare x with 30 and 60,
+    // which the cells miss: both are forced onto the grid.
+    let src = "tick 1 s;
+plant chart P {
+  continuous x: [0 .. 100] = 0;
+  grid x 4;
+  initial Go;
+  state Go { der(x) = 5; }
+}
+system S {
+  instance p: P;
+  ltl low: G p.x <= 30;
+  ctl not60: AG (p.x != 60);
+}";
+    let c = plans(src);
+    let p = &c[0].plans[0];
+    assert_eq!(p.forced, vec![30, 60]);
+    assert_eq!(p.points, vec![0, 25, 30, 50, 60, 75, 100]);
+}

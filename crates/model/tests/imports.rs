@@ -157,3 +157,43 @@ fn syntax_errors_of_an_imported_file_point_into_it() {
     // The missing expression is the empty span right after `=`, at column 10.
     assert_eq!(w[0], "E0010 @ b.sc:2:10");
 }
+
+/// `load_with` joins relative imports to the importing file's directory with the leading `/`
+/// kept (file-system paths), folds `..`, and reports an unreadable file at its import.
+#[test]
+fn read_resolver_keeps_absolute_paths() {
+    let files = [
+        ("/m/lib/consts.sc", "const N = 3;"),
+        (
+            "/m/lib/c.sc",
+            "chart C { output x: int[0..N] = 0; initial S; state S; }",
+        ),
+    ];
+    let mut asked = Vec::new();
+    let p = statecheck_model::imports::load_with(
+        "/m/top.sc",
+        "import \"lib/consts.sc\"; import \"lib/../lib/c.sc\"; system T { instance c: C; }".into(),
+        |k| {
+            asked.push(k.to_string());
+            files
+                .iter()
+                .find(|(f, _)| *f == k)
+                .map(|(_, t)| t.to_string())
+        },
+    );
+    assert!(p.diags.is_empty(), "{:?}", p.diags);
+    assert_eq!(asked, ["/m/lib/consts.sc", "/m/lib/c.sc"]);
+    assert_eq!(names(&p), ["N", "C", "T"]);
+    let (_, diags) = statecheck_model::check(&p.file);
+    assert!(!diags.iter().any(Diagnostic::is_error), "{diags:?}");
+
+    let p =
+        statecheck_model::imports::load_with("/m/top.sc", "import \"gone.sc\";".into(), |_| None);
+    assert_eq!(p.diags.len(), 1);
+    assert_eq!(p.diags[0].code, "E0140");
+    assert!(
+        format!("{:?}", p.diags[0]).contains("/m/gone.sc"),
+        "{:?}",
+        p.diags[0]
+    );
+}

@@ -164,8 +164,12 @@ fn examples_are_clean() {
         let Ok(src) = std::fs::read_to_string(&path) else {
             continue;
         };
-        let (file, _) = statecheck_syntax::parse(&src);
-        let (_, diags) = statecheck_model::check(&file);
+        // fam.sc imports the FAM chart from lib/: follow its imports.
+        let program = statecheck_model::imports::load_with(&path.to_string_lossy(), src, |k| {
+            std::fs::read_to_string(k).ok()
+        });
+        assert!(program.diags.is_empty(), "{example}: {:#?}", program.diags);
+        let (_, diags) = statecheck_model::check(&program.file);
         let lints: Vec<_> = diags.iter().filter(|d| d.code.starts_with("W03")).collect();
         assert!(lints.is_empty(), "{example}: {lints:#?}");
     }

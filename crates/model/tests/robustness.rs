@@ -144,3 +144,37 @@ fn suggestions_for_unknown_targets_in_deep_nesting_have_bounded_cost() {
     let want: Vec<(&str, usize)> = (0..n).map(|k| ("E0111", 4 + 2 * k)).collect();
     assert_eq!(errs, want);
 }
+
+#[test]
+fn tick_hint_for_a_very_slow_motion_has_bounded_cost() {
+    // Found by the `check` fuzz target (a mutated tests/hybrid/params.sc): a rate of 20/2^40 %
+    // per second makes the crossing of one 5 % cell take 5 / (20 / 2^40) = 2^38 s, i.e.
+    // 2^38 / 1.25 = 219,902,325,555.2 ticks: not a whole number, so E0181 at the `der` line.
+    // Its hint searched every tick length g/m for m from 2.2e11 down to 1 (hours); it is
+    // now a bounded search.
+    let src = "tick 1250 ms;
+plant chart Mover {
+  input go: bool = false;
+  continuous pos: [0 .. 100] = 0;
+  grid pos 20;
+  initial Home;
+  state Home { on [go] -> Move; }
+  state Move {
+    der(pos) = 20 / 1099511627776;
+    on [pos >= 100] -> Home;
+  }
+}
+";
+    assert_eq!(errors(src), vec![("E0181", 9)]);
+}
+
+#[test]
+fn a_parameterised_chart_named_like_an_earlier_chart_is_a_duplicate_not_a_panic() {
+    // Found by the `check` fuzz target: the second `A` has a parameter, the first has none;
+    // the parameter expansion looked the second up in the first's (absent) signature and
+    // panicked. It is one error: E0102, the duplicate name, at the second declaration.
+    let src = "chart A { initial S; state S; }
+chart A(k: int[0..3]) { initial S; state S; }
+";
+    assert_eq!(errors(src), vec![("E0102", 2)]);
+}

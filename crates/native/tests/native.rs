@@ -83,9 +83,12 @@ fn native_and_interpreter_agree_on_every_model() {
     let mut compared = 0;
     for path in sc_files() {
         let text = std::fs::read_to_string(&path).expect("read");
-        let (file, _) = statecheck_syntax::parse(&text);
-        let (model, diags) = statecheck_model::check(&file);
-        if diags.iter().any(|d| d.is_error()) {
+        // Follow imports (examples/fam's models import lib/).
+        let program = statecheck_model::imports::load_with(&path.to_string_lossy(), text, |k| {
+            std::fs::read_to_string(k).ok()
+        });
+        let (model, diags) = statecheck_model::check(&program.file);
+        if program.diags.iter().chain(&diags).any(|d| d.is_error()) {
             continue;
         }
         for sys in &model.systems {

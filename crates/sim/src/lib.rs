@@ -4,6 +4,7 @@
 //! Nothing here decides what a tick does: runs drive [`statecheck_ir::Machine`]. The crate does
 //! no I/O; the CLI reads scenario files and renders traces.
 
+pub mod choices;
 pub mod guided;
 pub mod lasso;
 pub mod minimise;

@@ -30,9 +30,12 @@ pub fn programs() -> Vec<(String, statecheck_ir::Program)> {
         let Ok(src) = std::fs::read_to_string(&f) else {
             continue;
         };
-        let (file, d1) = statecheck_syntax::parse(&src);
-        let (model, d2) = statecheck_model::check(&file);
-        if d1.iter().chain(&d2).any(|d| d.is_error()) {
+        // Follow imports (examples/fam's models import lib/).
+        let program = statecheck_model::imports::load_with(&f.to_string_lossy(), src, |k| {
+            std::fs::read_to_string(k).ok()
+        });
+        let (model, d2) = statecheck_model::check(&program.file);
+        if program.diags.iter().chain(&d2).any(|d| d.is_error()) {
             continue;
         }
         for sys in &model.systems {

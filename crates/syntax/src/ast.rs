@@ -9,6 +9,7 @@ pub use crate::formula::{Formula, Quant, TempBin, TempOp};
 pub use hybrid::{HybridElem, Speed, SpeedExpr, SpeedNumber};
 
 mod hybrid;
+pub mod visit_mut;
 
 /// An identifier with its span.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -51,12 +52,15 @@ pub enum Item {
     Component(Component),
 }
 
-/// `component Name [implements I, …] { port; … instance …; connect …; order …; … }`: a
+/// `component Name[(params)] [implements I, …] { port; … instance …; connect …; … }`: a
 /// composite component with a declared interface (its ports) built from instances.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Component {
     /// The component's name.
     pub name: Ident,
+    /// Compile-time parameters, `component Storage(n: int) { … }`, like a chart's; empty
+    /// without a parameter list. Instances give arguments (`docs/components.md`).
+    pub params: Vec<ChartParam>,
     /// The interfaces it declares it implements.
     pub implements: Vec<Ident>,
     /// Its ports: `input`/`output` variables and events (no initial values).
@@ -628,6 +632,10 @@ pub struct System {
     pub requirements: Vec<StateRequirement>,
     /// `configuration NAME { inst = Chart(args); … }`: named choices of charts and arguments.
     pub configurations: Vec<Configuration>,
+    /// `system NAME interleaved { … }`: one top-level instance steps per tick, chosen by the
+    /// implicit scheduler input `sched.unit` (`docs/components.md`); false for the
+    /// synchronous default (and for a component's body).
+    pub interleaved: bool,
     /// Whole system.
     pub span: Span,
 }

@@ -1,7 +1,7 @@
 //! Binary encoding of location vectors as BDD variables, and readable guards from BDDs.
 //!
-//! Each automaton's location is a little-endian group of bits (most significant first in the
-//! variable order), the groups in instance order. Both engines express their results in this
+//! Each automaton's location is a group of bits (most significant first in the variable
+//! order), the groups in instance order or in a given order ([`Encoding::with_order`]). Both engines express their results in this
 //! encoding so that guard simplification is shared.
 
 use crate::problem::Problem;
@@ -20,6 +20,13 @@ pub struct Encoding {
 impl Encoding {
     /// The encoding of `p`'s automata, in instance order.
     pub fn new(p: &Problem) -> Encoding {
+        let id: Vec<usize> = (0..p.automata.len()).collect();
+        Encoding::with_order(p, &id)
+    }
+
+    /// The encoding with the automata's bit groups placed in `order` (a permutation of the
+    /// automata, e.g. [`crate::order::force`]); each automaton's bits stay together.
+    pub fn with_order(p: &Problem, order: &[usize]) -> Encoding {
         let widths: Vec<usize> = p
             .automata
             .iter()
@@ -30,7 +37,8 @@ impl Encoding {
         let all = vars.variables();
         let mut bits = vec![Vec::new(); widths.len()];
         let mut at = 0;
-        for (a, w) in widths.iter().enumerate() {
+        for &a in order {
+            let w = widths[a];
             bits[a] = all[at..at + w].to_vec();
             at += w;
         }

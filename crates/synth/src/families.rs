@@ -3,6 +3,8 @@
 
 use std::fmt::Write;
 
+pub mod scaled;
+
 /// Dining philosophers with `n` forks: philosopher `i` takes its left fork `i`, then its right
 /// fork `(i+1) % n` (both controllable), eats, and puts both down (uncontrollable `put_i`).
 /// Forks are plants with three states (free, held as a left fork, held as a right fork).

@@ -22,6 +22,7 @@ pub mod extract;
 pub mod families;
 pub mod guards;
 pub mod limits;
+pub mod order;
 pub mod problem;
 pub mod supremica;
 pub mod symbolic;

@@ -2,8 +2,8 @@
 //! the location vector (biodivine-lib-bdd), never enumerating product states.
 //!
 //! Choices (docs/synthesis.md, "Symbolic engine"):
-//! - **Variable order**: the automata in instance order, each automaton's bits together (the
-//!   generated families list synchronising automata next to each other).
+//! - **Variable order**: static, from the FORCE heuristic over the automata's event-sharing
+//!   hypergraph ([`crate::order`]), each automaton's bits together.
 //! - **Images without next-state variables**: automata are deterministic, so the pre-image of
 //!   a set `S` under event `e` substitutes, automaton by automaton, each of `e`'s transitions
 //!   `src → dst` into `S` (`loc = src ∧ S[loc := dst]`, a cofactor); the post-image does the
@@ -37,6 +37,8 @@ pub struct Symbolic {
     pub req_en: Vec<Bdd>,
     /// Fixpoint rounds (controllability + nonblocking) until stable.
     pub rounds: usize,
+    /// The automata in the order of their bits ([`crate::order::force`] unless given).
+    pub order: Vec<usize>,
 }
 
 /// The problem's transitions and enabling conditions as BDDs.
@@ -63,8 +65,8 @@ struct Step {
 }
 
 impl<'p> Ctx<'p> {
-    fn new(p: &'p Problem) -> Ctx<'p> {
-        let enc = Encoding::new(p);
+    fn new(p: &'p Problem, order: &[usize]) -> Ctx<'p> {
+        let enc = Encoding::with_order(p, order);
         let mut moves: Vec<Vec<Vec<Step>>> = (0..p.events.len()).map(|_| Vec::new()).collect();
         for (ai, a) in p.automata.iter().enumerate() {
             for &e in &a.alphabet {
@@ -200,9 +202,16 @@ fn closure(
     Ok(all)
 }
 
-/// Run the symbolic engine within `budget`.
+/// Run the symbolic engine within `budget`, with the variable order of
+/// [`crate::order::force`].
 pub fn run(p: &Problem, budget: &Budget) -> Result<Symbolic, Error> {
-    let cx = Ctx::new(p);
+    run_ordered(p, budget, &crate::order::force(p))
+}
+
+/// Run the symbolic engine with the automata's bits in `order` (a permutation of the
+/// automata; for measuring orders).
+pub fn run_ordered(p: &Problem, budget: &Budget, order: &[usize]) -> Result<Symbolic, Error> {
+    let cx = Ctx::new(p, order);
     let n_ev = p.events.len();
     let all_events: Vec<EventId> = (0..n_ev as EventId).collect();
     let unc: Vec<EventId> = (0..n_ev as EventId)
@@ -280,6 +289,7 @@ pub fn run(p: &Problem, budget: &Budget) -> Result<Symbolic, Error> {
         plant_en: cx.plant_en.clone(),
         req_en: cx.req_en.clone(),
         rounds,
+        order: order.to_vec(),
         enc: cx.enc,
     })
 }
@@ -287,7 +297,7 @@ pub fn run(p: &Problem, budget: &Budget) -> Result<Symbolic, Error> {
 /// Per event, the states of the controlled behaviour where the event is allowed and leads to
 /// a kept state; used for guards and for counting transitions.
 pub fn allowed_sets(p: &Problem, s: &Symbolic) -> Vec<Bdd> {
-    let cx = Ctx::new(p);
+    let cx = Ctx::new(p, &s.order);
     (0..p.events.len() as EventId)
         .map(|e| cx.pre(e, &s.good).and(&s.reach))
         .collect()

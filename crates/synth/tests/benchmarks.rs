@@ -178,3 +178,61 @@ fn check_catches_bad_supervisors() {
         r.violations
     );
 }
+
+/// The reference implementation's figures (`examples/synthesis/reference.py`, which builds
+/// the automata itself from the families' descriptions): (product, supervisor states,
+/// transitions).
+fn reference(family: &str, n: usize, k: usize) -> (f64, u128, u128) {
+    let script = format!(
+        "{}/../../examples/synthesis/reference.py",
+        env!("CARGO_MANIFEST_DIR")
+    );
+    let out = std::process::Command::new("python3")
+        .args([&script, family, &n.to_string(), &k.to_string()])
+        .output()
+        .expect("python3 runs");
+    assert!(out.status.success(), "{out:?}");
+    let text = String::from_utf8_lossy(&out.stdout);
+    let w: Vec<&str> = text.split_whitespace().collect();
+    // "reference T product P supervisor S states N transitions"
+    let num = |key: &str| -> &str {
+        let i = w.iter().position(|x| *x == key).expect(key);
+        w[i + 1]
+    };
+    (
+        num("product").parse().expect("product"),
+        num("supervisor").parse().expect("states"),
+        w[w.len() - 2].parse().expect("transitions"),
+    )
+}
+
+#[test]
+fn scaled_families_match_the_reference() {
+    for (family, n, k) in [
+        ("tl", 2, 1),
+        ("tl", 3, 2),
+        ("dp", 3, 1),
+        ("dp", 3, 2),
+        ("cm", 1, 1),
+        ("cm", 2, 1),
+        ("at", 2, 2),
+        ("at", 3, 2),
+        ("bw", 2, 2),
+        ("bw", 3, 1),
+        ("ta", 2, 2),
+        ("ta", 3, 1),
+    ] {
+        let text = families::scaled::generate(family, n, k).expect("in range");
+        let p = problem_of(&text, None);
+        let (product, states, transitions) = reference(family, n, k);
+        let s = synthesize(&p, Engine::Symbolic).expect("runs");
+        assert_eq!(s.product_states, product, "{family}({n},{k}) product");
+        assert_eq!(both(&p), (states, transitions), "{family}({n},{k})");
+    }
+    // TL(n, 1) is the line family, whose size is derived by hand (3 * 4^(n-1)).
+    assert_eq!(
+        reference("tl", 3, 1).1,
+        48,
+        "reference disagrees with the hand derivation"
+    );
+}

@@ -1,4 +1,4 @@
-// master_policy.sc — the hand-written master of the thesis (App. D, our `parts/master.part`)
+// master_policy.sc — the hand-written master of the thesis (App. D, our `lib/master.sc`)
 // abstracted to the events of `runmode.sc`: which command it sends in each situation. It is a
 // supervisor in the bridge form of docs/synthesis.md (one free input `ev`, the event proposed
 // this tick; output `fire`, the event that occurs), so the independent checker can judge it:
@@ -9,12 +9,12 @@
 // and `run.sh` composes it with the synthesized supervisor to check that every event the master
 // lets happen, the supervisor lets happen too.
 //
-// How master.part becomes an event policy:
+// How lib/master.sc becomes an event policy:
 // * The master decides once per round from the latest response. Here it decides after every
 //   event, on the state that event leaves (what the next response reports): the master sees
 //   every flag before its next request. (In the bus model a flag can rise between a response and
 //   the next request; the FAM's own inhibition covers that gap, ch. 5.4.)
-// * The phases, their order of evaluation and the counters are master.part's: failure before
+// * The phases, their order of evaluation and the counters are lib/master.sc's: failure before
 //   stall (`bitCheck` before `calibAndStall`), FBF counted once per occurrence (4 retries in the
 //   same direction, then the opposite direction once, then FAILURE_RUN until power off), HSL
 //   counted per STOP_FAILURE round it survives (2 rounds, then FAILURE_RUN), COF cleared with
@@ -31,7 +31,7 @@
 
 enum Event { none, normalRun, failureRun, stopStall, stopFailure, clearNotCalib, arrive, stall, endStop, hslOn, hslPermanent, otfOn, ccfOn, fbf, epm, powerLoss, powerLossNoSave, hslOff, otfOff, cof }
 
-// master.part's phases.
+// lib/master.sc's phases.
 enum Phase {
   NORMAL,        // follow the CCM
   FAIL_WAIT,     // general solution: STOP_FAILURE until the flags are cleared
@@ -52,15 +52,15 @@ enum OtfLoc { OTF_CLEAR, OTF_SET, OTF_CAUSE_GONE }
 enum CalLoc { CAL_OK, CAL_LOST, CAL_REFERENCED, CAL_LOST_FOR_GOOD }
 
 const FBF_RETRIES: int = 4;   // D.3.2.3 bit 2: "Repeat this routine 4 times"
-const HSL_ROUNDS: int = 2;    // D.3.2.3 bit 7: rounds before "permanent" (master.part)
-const MAX_BOUNCE: int = 1;    // master.part's bound on bounce steps
-// master.part handles a failure before a pending stall (the thesis's master_failure_before_stall)
+const HSL_ROUNDS: int = 2;    // D.3.2.3 bit 7: rounds before "permanent" (lib/master.sc)
+const MAX_BOUNCE: int = 1;    // lib/master.sc's bound on bounce steps
+// lib/master.sc handles a failure before a pending stall (the thesis's master_failure_before_stall)
 // and then resumes the stall procedure: a stall at an end stop found *before* the failure still
 // counts as the calibration stall, and CLEAR_NOT_CALIB follows without a calibration move after
 // the failure (runmode.sc's requirement 4 is violated; see docs/synthesis.md). `true` makes a
 // failure cancel the pending reference, so that the failure's notCalib leads to a calibration.
 const FORGET_REFERENCE_ON_FAILURE: bool = false;
-// master.part stays in FAILURE_RUN "until power off" once it assumes a failure permanent (bit 7
+// lib/master.sc stays in FAILURE_RUN "until power off" once it assumes a failure permanent (bit 7
 // after HSL_ROUNDS, bit 2 after the retries): it never sends STOP_STALL or STOP_FAILURE again,
 // so a stall pending at that moment, an HSL whose cause did go away, the FBF flag (STOP_FAILURE
 // clears it; the master assumes it would recur) or a later COF stay set for ever — blocking in
@@ -120,7 +120,7 @@ chart MasterPolicy {
       if ev == Event.epm && stopped(drive) { fire = ev; }
       if ev == Event.powerLoss && running(drive) { fire = ev; }
       if ev == Event.powerLossNoSave || ev == Event.cof { fire = ev; }
-      // The master's commands: the request of its phase (master.part `commit`).
+      // The master's commands: the request of its phase (lib/master.sc `commit`).
       if ev == Event.normalRun
          && (phase == NORMAL || phase == FBF_RUN
              || ((phase == CALIB || phase == BACKOFF || phase == FBF_OPP) && !sent)) {
@@ -179,12 +179,12 @@ chart MasterPolicy {
       if fire == Event.powerLoss || fire == Event.powerLossNoSave {
         drive = HALTED; lossSet = true; cal = lose(cal);
       }
-      // master.part decides "gray zone or hard point" from the reported position; after a failed
+      // lib/master.sc decides "gray zone or hard point" from the reported position; after a failed
       // save that is 0x800, outside both gray zones.
       if fire == Event.powerLossNoSave { lastGray = false; }
       if fire == Event.cof { cofSet = true; }
 
-      // --- The master's next decision (master.part) ----------------------------------------
+      // --- The master's next decision (lib/master.sc) ----------------------------------------
       if fire == Event.normalRun && (phase == CALIB || phase == BACKOFF || phase == FBF_OPP) {
         sent = true;
       }

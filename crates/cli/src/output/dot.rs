@@ -4,7 +4,7 @@
 
 use super::dot_text::{esc, label as lines, Written};
 use statecheck_ir::{CoverKind, Program};
-use statecheck_model::{Chart, Dest, Model, NodeKind, StateId};
+use statecheck_model::{Chart, Dest, Model, NodeKind, StateId, Trigger};
 use std::fmt::Write;
 
 fn node_id(inst: usize, s: StateId) -> String {
@@ -38,6 +38,15 @@ pub fn render(model: &Model, p: &Program, written: &Written, counts: Option<&[u6
             let n = count_of(i, &CoverKind::Transition(t as u32));
             let parts = written.parts(tr.span);
             let mut first = parts.trigger.map(|t| written.text(t)).unwrap_or_default();
+            // A timer written in ticks also shows its time when the model declares a tick.
+            if let Trigger::After(n) = tr.trigger {
+                let in_units = [" s)", "ms)", "min)"].iter().any(|u| first.ends_with(u));
+                if let Some(t) = u64::try_from(n).ok().and_then(|n| p.time_text(n)) {
+                    if !in_units {
+                        first = format!("{first} = {t} s");
+                    }
+                }
+            }
             if let Some(g) = parts.guard {
                 first = format!("{first} [{}]", written.text(g));
             }

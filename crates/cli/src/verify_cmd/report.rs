@@ -139,6 +139,8 @@ pub fn stats_json(p: &Program, source: &Sources, s: &Stats) -> Value {
         "backend": s.backend,
         "native_build_s": s.native_build_time.map(|t| t.as_secs_f64()),
         "native_note": s.native_note,
+        "symmetry": s.symmetry,
+        "symmetry_note": s.symmetry_note,
     })
 }
 
@@ -371,6 +373,13 @@ fn stats_line(s: &Stats) -> String {
         (_, Some(note)) => format!("\nnative code not used: {note}"),
         (Some(t), None) => format!(", native code (built in {:.2} s)", t.as_secs_f64()),
         (None, None) => String::new(),
+    };
+    let native = match (s.symmetry, &s.symmetry_note) {
+        (_, Some(note)) => format!("{native}\n{note}"),
+        (true, None) => format!(
+            "{native}\nsymmetry reduction: states are orbits of interchangeable array elements"
+        ),
+        (false, None) => native,
     };
     format!(
         "{} states, {} transitions, depth {}, {:.2} s ({:.0} states/s), {:.1} bytes/state, peak {}, {} thread(s), {}-bit states, branching {}{after}{native}\n",

@@ -32,12 +32,15 @@ pub fn backend_line(s: &Stats, asked: Backend) -> String {
     )
 }
 
-/// Parse, check and lower system `Bench` of `text`; a bench model that fails is a bug of the
-/// benchmark, reported and exited on.
-pub fn bench_program(text: &str) -> Program {
-    let (file, diags) = statecheck_syntax::parse(text);
-    let (model, more) = statecheck_model::check(&file);
-    if let Some(d) = diags.iter().chain(&more).find(|d| d.is_error()) {
+/// Parse, check and lower system `Bench` of `text`, read as the file `path` (its imports are
+/// read relative to it); a bench model that fails is a bug of the benchmark, reported and
+/// exited on.
+pub fn bench_program(path: &str, text: &str) -> Program {
+    let program = statecheck_model::imports::load_with(path, text.to_string(), |k| {
+        std::fs::read_to_string(k).ok()
+    });
+    let (model, more) = statecheck_model::check(&program.file);
+    if let Some(d) = program.diags.iter().chain(&more).find(|d| d.is_error()) {
         eprintln!("bench model does not check: {d:?}");
         std::process::exit(1);
     }

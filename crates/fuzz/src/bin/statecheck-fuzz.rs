@@ -70,6 +70,7 @@ fn main_cmd(cmd: &str, a: &Args) -> Result<ExitCode, String> {
                 a.num("--start", 0)?,
                 a.num("--stride", 1)?,
                 a.num("--end", u64::MAX)?,
+                a.0.iter().any(|x| x == "--precise"),
             );
             Ok(ExitCode::SUCCESS)
         }

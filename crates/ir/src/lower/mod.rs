@@ -4,7 +4,8 @@
 //! The rules, in the order a tick applies them (see docs/semantics.md for worked examples):
 //! - R1 Tick 0 only initialises: every instance, in execution order, performs its default
 //!   entry (entry actions outermost first, `initial` children, regions in order).
-//! - R2 Later ticks run every instance's step in execution order; observers run last.
+//! - R2 Later ticks run every instance's step in execution order; observers run last. In an
+//!   interleaved system only the instances of the unit named by the input `sched.unit` step.
 //! - R3 At the start of an instance's step, its output events are cleared, and local events
 //!   raised in the previous tick become present (those raised now are present next tick).
 //! - R4 The step walks the active configuration top-down. For an active state: its timer
@@ -187,10 +188,36 @@ impl<'m> Lowerer<'m> {
         }
         let mut init_calls = Vec::new();
         let mut step_calls = Vec::new();
+        // Interleaved (`system S interleaved`): a unit's instances step only in a tick whose
+        // scheduler input names the unit; the others keep their whole state (timers, events
+        // raised in their last step) until their next step. Tick 0 initialises every unit.
+        let sched = self.sys.interleaved.as_ref().map(|il| {
+            let slot = self.lay.instances[il.scheduler as usize]
+                .var_slots
+                .first()
+                .copied()
+                .unwrap_or(0);
+            (slot, il.unit.clone())
+        });
         for &i in &self.sys.order {
             let (init, step) = self.instance(i);
             init_calls.push(Stmt::Call(init));
-            step_calls.push(Stmt::Call(step));
+            match sched
+                .as_ref()
+                .and_then(|(s, u)| Some((*s, (*u.get(i as usize)?)?)))
+            {
+                Some((slot, unit)) => {
+                    let sv = self.slot(slot);
+                    let uv = self.konst(unit as i64);
+                    let cond = self.bin(BinOp::Eq, sv, uv);
+                    step_calls.push(Stmt::If {
+                        cond,
+                        then: vec![Stmt::Call(step)],
+                        otherwise: Vec::new(),
+                    });
+                }
+                None => step_calls.push(Stmt::Call(step)),
+            }
         }
         let started = self.lay.started;
         let started_e = self.slot(started);

@@ -10,11 +10,14 @@
 //! still one synchronous step, lowered once. Each component also runs alone as an implicit
 //! system named like it (its unconnected input ports are free inputs).
 
+mod params;
 mod ports;
 mod scope;
+mod size;
 mod slots;
 mod visit;
 
+pub(crate) use params::expand as expand_params;
 pub(crate) use ports::{check as check_ports, conformance};
 
 use statecheck_base::{Diagnostic, Span};
@@ -97,9 +100,21 @@ pub(crate) fn flatten(file: &ast::File, diags: &mut Vec<Diagnostic>) -> Option<F
     let mut standalone = HashSet::new();
     let mut extra = Vec::new();
     let mut components = Vec::new();
+    let mut sizes = HashMap::new();
+    // A component too big to run alone is reported only in a file without systems (in a
+    // file with systems, the systems that instantiate it are).
+    let report_alone = !file.items.iter().any(|i| matches!(i, ast::Item::System(_)));
     for item in &file.items {
         match item {
             ast::Item::System(s) => {
+                if size::too_big(s, &comps, &mut sizes, Some(&mut *diags)) {
+                    // Refused before any work: an empty system keeps the systems' order.
+                    let mut empty = scope::Flattener::empty_system();
+                    empty.name = s.name.clone();
+                    empty.span = s.span;
+                    out.items.push(ast::Item::System(empty));
+                    continue;
+                }
                 let mut f = scope::Flattener::new(&comps, &known, diags, &s.name.name);
                 let mut flat = f.system(s, None);
                 links.extend(f.links);
@@ -112,6 +127,14 @@ pub(crate) fn flatten(file: &ast::File, diags: &mut Vec<Diagnostic>) -> Option<F
                 if comps
                     .get(c.name.name.as_str())
                     .is_some_and(|k| std::ptr::eq(*k, c))
+                    // A copy with arguments (`Storage(3)`) runs only where instantiated.
+                    && !c.name.name.contains('(')
+                    && !size::too_big(
+                        &c.body,
+                        &comps,
+                        &mut sizes,
+                        report_alone.then_some(&mut *diags),
+                    )
                 {
                     let mut f = scope::Flattener::new(&comps, &known, diags, &c.name.name);
                     let flat = f.system(&c.body, Some(c));
@@ -213,4 +236,18 @@ fn component_rules(c: &ast::Component, diags: &mut Vec<Diagnostic>) {
             );
         }
     }
+}
+
+/// Drop "unknown name" errors (E0101) at a path already reported as a bad index of a
+/// component array (E0176): the path stays as written, which the checker cannot resolve.
+pub(crate) fn suppress_cascades(diags: &mut Vec<Diagnostic>) {
+    let bad: HashSet<u32> = diags
+        .iter()
+        .filter(|d| d.code == "E0176")
+        .map(|d| d.span.start)
+        .collect();
+    if bad.is_empty() {
+        return;
+    }
+    diags.retain(|d| !(d.code == "E0101" && bad.contains(&d.span.start)));
 }

@@ -14,6 +14,8 @@ enum Local {
     Leaf(String),
     /// A component instance: the index of its scope.
     Composite(usize),
+    /// An array of component instances: each element's scope.
+    Array(Vec<usize>),
 }
 
 /// The scope of the system or of one component instance.
@@ -104,6 +106,7 @@ impl<'a, 'd> Flattener<'a, 'd> {
                 observers: Vec::new(),
                 requirements: Vec::new(),
                 configurations: Vec::new(),
+                interleaved: false,
                 span: Span::default(),
             },
         }
@@ -124,6 +127,7 @@ impl<'a, 'd> Flattener<'a, 'd> {
         out.observers = s.observers.clone();
         out.requirements = s.requirements.clone();
         out.configurations = s.configurations.clone();
+        out.interleaved = s.interleaved && comp.is_none();
         if comp.is_some() {
             out.observers.clear();
             out.requirements.clear();
@@ -161,7 +165,8 @@ impl<'a, 'd> Flattener<'a, 'd> {
         out
     }
 
-    fn empty_system() -> ast::System {
+    /// A system with nothing in it.
+    pub fn empty_system() -> ast::System {
         ast::System {
             name: ast::Ident {
                 name: String::new(),
@@ -176,6 +181,7 @@ impl<'a, 'd> Flattener<'a, 'd> {
             observers: Vec::new(),
             requirements: Vec::new(),
             configurations: Vec::new(),
+            interleaved: false,
             span: Span::default(),
         }
     }
@@ -202,12 +208,29 @@ impl<'a, 'd> Flattener<'a, 'd> {
         for inst in &body.instances {
             let name = full(&prefix, &inst.name.name);
             let local = if let Some(c) = self.comps.get(inst.chart.name.as_str()).copied() {
-                match self.child(inst, c, name) {
-                    Some(ch) => {
-                        self.scopes[id].children.push(ch);
-                        Local::Composite(ch)
+                match &inst.count {
+                    // Its length is a literal by now (`params.rs`): elements `cells[0]`, ….
+                    Some(ast::Expr::Int(n, _)) => {
+                        let mut ids = Vec::new();
+                        for k in 0..*n {
+                            match self.child(inst, c, format!("{name}[{k}]")) {
+                                Some(ch) => ids.push(ch),
+                                None => break,
+                            }
+                        }
+                        if ids.len() as i64 != *n {
+                            continue;
+                        }
+                        self.scopes[id].children.extend(ids.iter().copied());
+                        Local::Array(ids)
                     }
-                    None => continue,
+                    _ => match self.child(inst, c, name) {
+                        Some(ch) => {
+                            self.scopes[id].children.push(ch);
+                            Local::Composite(ch)
+                        }
+                        None => continue,
+                    },
                 }
             } else {
                 self.leaves += 1;
@@ -234,7 +257,7 @@ impl<'a, 'd> Flattener<'a, 'd> {
             };
             let names = &mut self.scopes[id].names;
             if names.contains_key(&inst.name.name) {
-                if matches!(local, Local::Composite(_)) {
+                if matches!(local, Local::Composite(_) | Local::Array(_)) {
                     self.diags.push(
                         Diagnostic::error(
                             "E0102",
@@ -289,15 +312,19 @@ impl<'a, 'd> Flattener<'a, 'd> {
         id
     }
 
-    /// The scope of the component instance `inst` of `c`; `None` (reported) for recursion,
-    /// nesting too deep, arrays and arguments.
+    /// The scope of the component instance `inst` of `c` (or of one element of an array of
+    /// them); `None` (reported) for recursion, nesting too deep and arguments.
     fn child(
         &mut self,
         inst: &'a ast::Instance,
         c: &'a ast::Component,
         name: String,
     ) -> Option<usize> {
-        if let Some(count) = &inst.count {
+        if let Some(count) = inst
+            .count
+            .as_ref()
+            .filter(|n| !matches!(n, ast::Expr::Int(..)))
+        {
             self.diags.push(
                 Diagnostic::error(
                     "E0173",
@@ -342,7 +369,9 @@ impl<'a, 'd> Flattener<'a, 'd> {
         }
         // Components nested a few levels deep multiply: bound the instances visited, not
         // only the leaves kept, so that the flattening's time and memory stay bounded.
-        if self.scopes.len() + self.leaves >= MAX_INSTANCES {
+        // (The chart instances a system flattens to are counted before flattening, E0174;
+        // this bounds component instances without any chart inside.)
+        if self.scopes.len() >= MAX_INSTANCES {
             if self.leaves <= MAX_INSTANCES {
                 self.leaves = MAX_INSTANCES + 1;
                 self.diags.push(
@@ -460,6 +489,11 @@ impl<'a, 'd> Flattener<'a, 'd> {
                     span: at,
                 }),
                 Local::Composite(ch) => order.extend(scopes[*ch].order.iter().cloned()),
+                Local::Array(ids) => {
+                    for ch in ids {
+                        order.extend(scopes[*ch].order.iter().cloned());
+                    }
+                }
             }
         };
         match body.order.as_slice() {
@@ -682,7 +716,66 @@ impl<'a, 'd> Flattener<'a, 'd> {
                 Some(Res::Path(p))
             }
             Some(Local::Composite(ch)) => self.through(ch, path),
+            Some(Local::Array(ids)) => {
+                let (ch, rest) = self.element(&ids, path)?;
+                self.through(ch, &rest)
+            }
         }
+    }
+
+    /// The element of a component array that `path` (starting `cells[1]`) names, and the
+    /// path with the index dropped; `None` after E0176 (no index, `[*]`, not a literal, out
+    /// of range).
+    fn element(&mut self, ids: &[usize], path: &ast::Path) -> Option<(usize, ast::Path)> {
+        let seg = path.segments.first()?;
+        let bad = |msg: String, label: &str, span| {
+            Diagnostic::error("E0176", msg, span)
+                .with_label(label.to_string())
+                .with_hint(format!(
+                    "name one element: `{}[0]` … `{}[{}]`",
+                    seg.name.name,
+                    seg.name.name,
+                    ids.len().saturating_sub(1)
+                ))
+        };
+        let d = match &seg.index {
+            None => bad(
+                format!("`{}` is an array of components: index it", seg.name.name),
+                "an array, not one component",
+                path.span,
+            ),
+            Some(ast::Index::All(_)) => bad(
+                format!("`{}[*]`: an array of components is named one element at a time", seg.name.name),
+                "`[*]` is for chart instance arrays",
+                path.span,
+            ),
+            Some(ast::Index::At(e)) => match **e {
+                ast::Expr::Int(k, _) if k >= 0 && (k as usize) < ids.len() => {
+                    let mut rest = path.clone();
+                    rest.segments[0].index = None;
+                    return Some((ids[k as usize], rest));
+                }
+                ast::Expr::Int(k, _) => bad(
+                    format!(
+                        "index {k} is out of range: `{}` has {} elements",
+                        seg.name.name,
+                        ids.len()
+                    ),
+                    "out of range",
+                    path.span,
+                ),
+                _ => bad(
+                    format!(
+                        "the index of the component array `{}` must be an integer literal (or a parameter)",
+                        seg.name.name
+                    ),
+                    "not a literal",
+                    path.span,
+                ),
+            },
+        };
+        self.diags.push(d);
+        None
     }
 
     /// A path that starts with the component instance of scope `ch`.
@@ -746,6 +839,10 @@ impl<'a, 'd> Flattener<'a, 'd> {
                 Some(Res::Path(p))
             }
             Some(Local::Composite(g)) => self.through(g, &rest),
+            Some(Local::Array(ids)) => {
+                let (g, rest) = self.element(&ids, &rest)?;
+                self.through(g, &rest)
+            }
             None => {
                 let names = c
                     .ports

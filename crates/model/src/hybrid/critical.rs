@@ -200,7 +200,24 @@ impl Collector<'_> {
                 }
                 self.expr(expr);
             }
-            K::Ltl { .. } | K::Ctl { .. } => {}
+            K::Ltl { formula } | K::Ctl { formula } => self.formula(formula),
+        }
+    }
+
+    /// The atoms of a temporal formula (its nesting is bounded by the parser's).
+    fn formula(&mut self, f: &ast::Formula) {
+        use ast::Formula as F;
+        match f {
+            F::Atom(e) => self.expr(e),
+            F::Not(a, _) | F::Unary(_, a, _) => self.formula(a),
+            F::And(a, b, _)
+            | F::Or(a, b, _)
+            | F::Implies(a, b, _)
+            | F::Binary(_, a, b, _)
+            | F::QuantUntil(_, a, b, _) => {
+                self.formula(a);
+                self.formula(b);
+            }
         }
     }
 }

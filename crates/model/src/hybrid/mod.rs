@@ -37,6 +37,9 @@ pub struct ChartPlans {
 pub(crate) struct Discretized {
     /// The file with every hybrid chart rewritten.
     pub file: ast::File,
+    /// The plans of the charts discretized with their motion (not after an error, not the
+    /// copies with placeholder values).
+    pub plans: Vec<ChartPlans>,
 }
 
 /// The working context: constants, the tick, the file and the diagnostics.
@@ -221,6 +224,7 @@ pub(crate) fn discretize(
         !probe.iter().any(Diagnostic::is_error)
     };
     let mut out = file.clone();
+    let mut kept = Vec::new();
     for (i, ps, how) in plans {
         let Some(ast::Item::Chart(c)) = out.items.get_mut(i) else {
             continue;
@@ -229,6 +233,12 @@ pub(crate) fn discretize(
             Treat::Discretize => !failed,
             _ => placeholder_ok,
         };
+        if how == Treat::Discretize && motion {
+            kept.push(ChartPlans {
+                chart: c.name.name.clone(),
+                plans: ps.clone(),
+            });
+        }
         for p in &ps {
             apply(c, p, motion);
         }
@@ -241,7 +251,10 @@ pub(crate) fn discretize(
             }
         }
     }
-    Some(Discretized { file: out })
+    Some(Discretized {
+        file: out,
+        plans: kept,
+    })
 }
 
 /// The spans of the `continuous` declarations of `file`: generated code carries them, and a

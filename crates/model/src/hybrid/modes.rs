@@ -21,6 +21,17 @@ impl Cx<'_, '_> {
         let mut found = Vec::new();
         walk(&chart.body, &mut Vec::new(), &mut found, self, true);
         for (path, var, rate, span) in found {
+            if let Some((name, at)) = variable_in(&rate, chart, plans) {
+                self.error(
+                    at,
+                    "E0183",
+                    format!("the speed of `{var}` depends on `{name}`, a variable"),
+                    "only piecewise-constant speeds have exact clock readings: use constants, \
+                     chart parameters or a `profile(…)` (docs/hybrid.md, \"Why every reading \
+                     is exact\")",
+                );
+                continue;
+            }
             let Some(p) = plans.iter_mut().find(|p| p.var == var) else {
                 self.error(
                     span,
@@ -234,6 +245,31 @@ impl Cx<'_, '_> {
     }
 }
 
+/// The first name in `rate` that is a variable of the chart (a continuous one included): a
+/// speed that depends on the state has no closed-form clock readings.
+fn variable_in<'a>(
+    rate: &'a SpeedExpr,
+    chart: &ast::Chart,
+    plans: &[Plan],
+) -> Option<(&'a str, Span)> {
+    let speeds: Vec<&ast::Speed> = match rate {
+        SpeedExpr::Constant(s) => vec![s],
+        SpeedExpr::Profile(segs, last) => segs.iter().map(|(s, _)| s).chain([last]).collect(),
+    };
+    speeds
+        .into_iter()
+        .flat_map(|s| std::iter::once(&s.num).chain(s.den.as_ref()))
+        .find_map(|n| match n {
+            SpeedNumber::Expr(ast::Expr::Path(p)) if p.segments.len() == 1 => {
+                let name = p.segments[0].name.name.as_str();
+                let is_var = chart.vars.iter().any(|v| v.name.name == name)
+                    || plans.iter().any(|pl| pl.var == name);
+                is_var.then_some((name, p.span))
+            }
+            _ => None,
+        })
+}
+
 /// `at 2 units/s` or `with profile …` for messages.
 fn describe(profile: &[(Ratio, Option<Ratio>)]) -> String {
     match profile {
@@ -250,6 +286,9 @@ fn describe(profile: &[(Ratio, Option<Ratio>)]) -> String {
         }
     }
 }
+
+/// Candidate tick lengths [`tick_hint`] tries on each side of the given one.
+const HINT_BUDGET: i128 = 100_000;
 
 /// The tick lengths nearest to `tick` that divide every clock reading, as a hint.
 fn tick_hint(times: &[Ratio], tick: Ratio) -> String {
@@ -275,8 +314,13 @@ fn tick_hint(times: &[Ratio], tick: Ratio) -> String {
         .map(|r| r.num() / r.den())
         .unwrap_or(1)
         .max(1);
-    let below = (q + 1..q + 100_000).find_map(whole);
-    let above = (1..=q).rev().find_map(whole);
+    // At most HINT_BUDGET candidates on each side: a slow motion makes `q` astronomical
+    // (a rate of 20/2^31 per second with 1.25 s ticks gives q = 4.3e8) and a hint must not
+    // cost more than the check.
+    let below = (q.saturating_add(1)..q.saturating_add(HINT_BUDGET)).find_map(whole);
+    let above = (q.saturating_sub(HINT_BUDGET).max(1)..=q)
+        .rev()
+        .find_map(whole);
     let fmt = |t: Ratio| match ms(t) {
         Some(m) => format!("{m} ms"),
         None => format!("{t} s"),

@@ -203,21 +203,7 @@ impl Printer<'_> {
             Some(r) => format!("{} chart {}", r.name, c.name.name),
             None => format!("chart {}", c.name.name),
         };
-        if !c.params.is_empty() {
-            let ps: Vec<String> = c
-                .params
-                .iter()
-                .map(|p| {
-                    let default = p
-                        .default
-                        .as_ref()
-                        .map(|e| format!(" = {}", self.expr(e)))
-                        .unwrap_or_default();
-                    format!("{}: {}{default}", p.name.name, self.ty(&p.ty))
-                })
-                .collect();
-            head.push_str(&format!("({})", ps.join(", ")));
-        }
+        head.push_str(&self.params(&c.params));
         if !c.implements.is_empty() {
             let names: Vec<&str> = c.implements.iter().map(|i| i.name.as_str()).collect();
             head.push_str(&format!(" implements {}", names.join(", ")));
@@ -239,13 +225,36 @@ impl Printer<'_> {
     }
 
     fn system(&mut self, s: &System) {
-        let head = format!("system {}", s.name.name);
+        let mut head = format!("system {}", s.name.name);
+        if s.interleaved {
+            head.push_str(" interleaved");
+        }
         self.system_like(s, &head, &[]);
     }
 
-    /// `component NAME [implements I, …] { ports; members }`.
+    /// `(p: T [= default], …)` of a chart or component; empty without parameters.
+    fn params(&mut self, params: &[crate::ast::ChartParam]) -> String {
+        if params.is_empty() {
+            return String::new();
+        }
+        let ps: Vec<String> = params
+            .iter()
+            .map(|p| {
+                let default = p
+                    .default
+                    .as_ref()
+                    .map(|e| format!(" = {}", self.expr(e)))
+                    .unwrap_or_default();
+                format!("{}: {}{default}", p.name.name, self.ty(&p.ty))
+            })
+            .collect();
+        format!("({})", ps.join(", "))
+    }
+
+    /// `component NAME[(params)] [implements I, …] { ports; members }`.
     fn component(&mut self, c: &crate::ast::Component) {
         let mut head = format!("component {}", c.name.name);
+        head.push_str(&self.params(&c.params));
         if !c.implements.is_empty() {
             let names: Vec<&str> = c.implements.iter().map(|i| i.name.as_str()).collect();
             head.push_str(&format!(" implements {}", names.join(", ")));

@@ -173,13 +173,20 @@ impl Parser<'_> {
         self.text(self.tok().span) == "component"
             && self.nth(1).kind == Tok::Ident
             && (self.nth(2).kind == Tok::LBrace
+                || self.nth(2).kind == Tok::LParen
                 || (self.nth(2).kind == Tok::Ident && self.text(self.nth(2).span) == "implements"))
     }
 
-    /// `'component' IDENT [ 'implements' IDENT { ',' IDENT } ] '{' { port | sys_elem } '}'`
+    /// `'component' IDENT [ '(' params ')' ] [ 'implements' IDENT { ',' IDENT } ]
+    /// '{' { port | sys_elem } '}'`
     pub(super) fn component(&mut self) -> PResult<Component> {
         let start = self.bump().span;
         let name = self.expect_ident("a component name after `component`")?;
+        let params = if self.at(Tok::LParen) {
+            self.chart_params()?
+        } else {
+            Vec::new()
+        };
         let mut implements = Vec::new();
         if self.at(Tok::Ident) && self.text(self.tok().span) == "implements" {
             self.bump();
@@ -201,6 +208,7 @@ impl Parser<'_> {
             observers: Vec::new(),
             requirements: Vec::new(),
             configurations: Vec::new(),
+            interleaved: false,
             span: start,
         };
         let mut ports = Vec::new();
@@ -209,6 +217,7 @@ impl Parser<'_> {
         body.span = span;
         Ok(Component {
             name,
+            params,
             implements,
             ports,
             body,

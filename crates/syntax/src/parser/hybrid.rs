@@ -93,7 +93,35 @@ impl Parser<'_> {
                 let var = self.expect_ident("a continuous variable in `der( … )`")?;
                 self.expect(Tok::RParen, "after the variable of `der`")?;
                 self.expect(Tok::Assign, "after `der( … )`")?;
-                let rate = self.speed_expr()?;
+                let rate_start = self.tok().span.start as usize;
+                let rate = if self.at(Tok::LParen) {
+                    None
+                } else {
+                    Some(self.speed_expr()?)
+                };
+                let rate = match rate {
+                    Some(r) if self.at(Tok::Semi) || self.at(Tok::RBrace) || self.at(Tok::Eof) => r,
+                    _ => {
+                        // `der(x) = k * (target - x)` and the like: not a constant speed.
+                        let d = Diagnostic::error(
+                        "E0183",
+                        format!(
+                            "the speed of `{}` must be a constant or a profile of constants, \
+                             not an expression",
+                            var.name
+                        ),
+                        Span::new(rate_start, self.tok().span.end as usize),
+                    )
+                    .with_label("not a constant speed")
+                    .with_hint(
+                        "only piecewise-constant speeds have exact clock readings: write \
+                         `der(x) = 2;`, `der(x) = SPEED / 10;` or `der(x) = profile(4 for 5 s, 1);` \
+                         (docs/hybrid.md, \"Why every reading is exact\")",
+                    );
+                        self.report(d);
+                        return Err(Failed);
+                    }
+                };
                 self.expect_semi("after `der( … ) = …`");
                 HybridElem::Der {
                     var,

@@ -581,10 +581,14 @@ impl Parser<'_> {
         })
     }
 
-    /// `'system' IDENT '{' { sys_elem } '}'`
+    /// `'system' IDENT [ 'interleaved' ] '{' { sys_elem } '}'`
     fn system(&mut self) -> PResult<System> {
         let start = self.bump().span;
         let name = self.expect_ident("a system name after `system`")?;
+        let interleaved = self.at(Tok::Ident) && self.text(self.tok().span) == "interleaved";
+        if interleaved {
+            self.bump();
+        }
         let open = self.expect(Tok::LBrace, "after the system name")?;
         let what = format!("system `{}`", name.name);
         let mut sys = System {
@@ -598,6 +602,7 @@ impl Parser<'_> {
             observers: Vec::new(),
             requirements: Vec::new(),
             configurations: Vec::new(),
+            interleaved,
             span: start,
         };
         self.system_elems(&mut sys, open, &what, None);

@@ -1,9 +1,14 @@
+// lib/master.sc — the master task: the controller `Controller` (one per slave) and its
+// procedures. Leaves to its importer, imported BEFORE this file: POS_TOP, MOD_TOP and mod12
+// (lib/modulus.sc or lib/thesis_modulus.sc). The scheduler + LIN driver MasterBus<N> is
+// in each system's file (lib/fam_system1.sc, ../fam_system2.sc ...); it reads BUDGET,
+// declared by the entry file (10; 5 in bug_short_timeout.sc).
 
 // =======================================================================================
 // The master task (thesis App. D, ch. 3.2): one `Controller` per slave (the thesis: "it is
 // possible to use several instances of this controller in order to control several FAMs.
 // These instances share the same bus. That is why there is a need for a scheduler"), and the
-// scheduler + LIN driver `MasterBus<N>` (generated per N by gen.sh).
+// scheduler + LIN driver `MasterBus<N>` (per N, in the system files).
 // =======================================================================================
 //
 // Positions in the closed loop are SCALED DOWN by 10 (the thesis §5.1 shrank its counters the
@@ -24,7 +29,8 @@ const BACK_STEPS: int = 2;      // D.3.2.2: "move backwards a few positions"
 const OPP: int = 2;           // D.3.2.3 bit 2: opposite direction, >= 17 positions
 const FBF_RETRIES: int = 4;   // D.3.2.3 bit 2: "Repeat this routine 4 times"
 const HSL_ROUNDS: int = 2;    // D.3.2.3 bit 7: "after some a certain timeout" (rounds)
-const BUDGET: int = 10;    // ch. 5.4: controller steps between a response and the next request
+// BUDGET (ch. 5.4: controller steps between a response and the next request) is declared by
+// the entry file: 10, or 5 in bug_short_timeout.sc.
 const REACH: int = OVER + MAX_BOUNCE * BOUNCE;   // how far past an end stop calibration goes
 
 enum Phase {
@@ -41,7 +47,7 @@ enum Phase {
 }
 
 // Eq. D.1 with the 12-bit modulus (the thesis prints "mod 4095"; positions are 0..4095).
-fn mod12(p: int[-8192..8191]) -> int[0..4095] = (p + 8192) % 4096;
+// mod12(p) is declared by lib/modulus.sc (or lib/thesis_modulus.sc).
 // Signed circular distance from e to p, in -2048..2047.
 fn sdist(p: int[0..4095], e: int[0..4095]) -> int[-2048..2047] = mod12(p - e + 2048) - 2048;
 fn inRange(p: int[0..4095], e1: int[0..4095]) -> bool = mod12(p - e1) <= RANGE;
@@ -51,12 +57,12 @@ fn clampR(p: int[0..4095], e1: int[0..4095]) -> int[0..4095] =
   else if sdist(p, e1) < 0 || sdist(p, e1) > RANGE + (4096 - RANGE) / 2 then e1
   else mod12(e1 + RANGE);
 // Eq. D.1: targetPos = (endPos1 + Range * CCM / 1000) mod 4096.
-fn ccmTarget(e1: int[0..4095], ccm: int[0..1000]) -> int[0..4095] = mod12(e1 + RANGE * ccm / 1000);
+fn ccmTarget(e1: int[0..4095], ccm: int[0..1000]) -> int[0..MOD_TOP] = mod12(e1 + RANGE * ccm / 1000);
 // D.3.1.1: the master predicts a wrong direction when the need of movement exceeds half a
 // turn and sets the swap flag. (The FAM of fam.sc shifts both the target and its actual
 // position by 0x800 itself, Table C.4, so the master sends the absolute target with SWAP set:
 // shifting it on both sides would cancel.)
-fn predictSwap(target: int[0..4095], actual: int[0..4095]) -> bool = abs(target - actual) > 2048;
+fn predictSwap(target: int[0..MOD_TOP], actual: int[0..4095]) -> bool = abs(target - actual) > 2048;
 // D.3.2.2: the gray zone: near a factory end stop, from GRAY inside the range to as far
 // outside as calibration goes.
 fn grayNear1(p: int[0..4095]) -> bool = sdist(p, E1F) >= -REACH && sdist(p, E1F) <= GRAY;
@@ -81,7 +87,7 @@ chart Controller {
   // The request fields (Table B.3 outputs), sent by the scheduler in this slave's request slot.
   output runMode: RunMode = STOP_STALL;
   output swap: bool = false;
-  output targetPos: int[0..4095] = E1F;
+  output targetPos: int[0..POS_TOP] = E1F;
   // The latest consistent response (Table B.3 inputs).
   output rNotCalib: bool = false;
   output rStall: bool = false;

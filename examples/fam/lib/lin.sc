@@ -1,3 +1,5 @@
+// lib/lin.sc — the LIN layer: frames, ident parity, checksums and the FAM's communication
+// superstate `FamPort`. Uses RunMode and the FAM's constants (lib/fam.sc, import it first).
 
 // =======================================================================================
 // The LIN layer (thesis App. A, C.2): frames, ident parity, checksum; the FAM's
