@@ -53,7 +53,14 @@ pub struct Reductions {
     slots: Vec<Mutex<Option<Option<Arc<Reduction>>>>>,
     /// The problem shared by the program's own properties, built on first use.
     shared: OnceLock<SharedProblem>,
+    /// Clauses of the invariants IC3 proved on the shared problem's reduction (over its
+    /// latches): facts of every reachable state, which later proofs start from.
+    lemmas: Mutex<Invariant>,
 }
+
+/// The most lemma clauses kept for later proofs (beyond it, new invariants are not added:
+/// every frame of every later IC3 run carries them).
+const MAX_LEMMAS: usize = 4000;
 
 impl Reductions {
     /// Room for `n` problems (and the shared one).
@@ -61,6 +68,45 @@ impl Reductions {
         Reductions {
             slots: (0..=n).map(|_| Mutex::new(None)).collect(),
             shared: OnceLock::new(),
+            lemmas: Mutex::new(Vec::new()),
+        }
+    }
+
+    /// Whether problem `i`'s reduction is computed (and useful): then the engines go to it
+    /// at once, without a quick attempt on the circuit as blasted.
+    fn ready(&self, i: usize) -> bool {
+        self.slots.get(i).is_some_and(|slot| {
+            slot.try_lock()
+                .is_ok_and(|g| g.as_ref().is_some_and(Option::is_some))
+        })
+    }
+
+    /// Whether the shared problem's reduction is computed.
+    fn shared_ready(&self) -> bool {
+        self.slots
+            .len()
+            .checked_sub(1)
+            .is_some_and(|l| self.ready(l))
+    }
+
+    /// The lemmas for the next proof on the shared reduction.
+    fn lemmas(&self) -> Invariant {
+        self.lemmas
+            .lock()
+            .unwrap_or_else(|e| e.into_inner())
+            .clone()
+    }
+
+    /// Keep the clauses of `inv` (an invariant proved on the shared reduction, which ends with
+    /// the `given` lemmas it started from) for later proofs.
+    fn learn(&self, inv: &Invariant, given: usize) {
+        let mut l = self.lemmas.lock().unwrap_or_else(|e| e.into_inner());
+        let new = &inv[..inv.len().saturating_sub(given)];
+        if l.len() + new.len() <= MAX_LEMMAS {
+            let known: std::collections::HashSet<&Vec<(usize, bool)>> = l.iter().collect();
+            let add: Vec<Vec<(usize, bool)>> =
+                new.iter().filter(|c| !known.contains(c)).cloned().collect();
+            l.extend(add);
         }
     }
 
@@ -110,27 +156,50 @@ pub fn run_reduced(
     reductions: &Reductions,
     limits: &Limits,
 ) -> Outcome {
-    run_with(engine, aig, limits, || reductions.get(i, aig, limits))
+    let ready = reductions.ready(i);
+    run_with(engine, aig, limits, ready, None, || {
+        reductions.get(i, aig, limits)
+    })
 }
 
-/// [`run_reduced`], with the reduction of `aig` from `reduction`.
+/// [`run_reduced`], with the reduction of `aig` from `reduction`: tried at once when it is
+/// `ready` (computed by an earlier attempt: the quick attempt on the circuit as blasted
+/// would only repeat what that attempt did), and with IC3 on it given the `lemmas` store's
+/// clauses and adding its own invariant to them.
 fn run_with(
     engine: Engine,
     aig: &Aig,
     limits: &Limits,
+    ready: bool,
+    lemmas: Option<&Reductions>,
     reduction: impl FnOnce() -> Option<Arc<Reduction>>,
 ) -> Outcome {
     if engine == Engine::Bmc {
         return engine.run(aig, limits);
     }
-    let quick = engine.run(aig, &limits.attempt_until(Instant::now() + QUICK));
-    if !matches!(quick, Outcome::Unknown(_)) || limits.expired().is_some() {
-        return quick;
+    if !ready {
+        let quick = engine.run(aig, &limits.attempt_until(Instant::now() + QUICK));
+        if !matches!(quick, Outcome::Unknown(_)) || limits.expired().is_some() {
+            return quick;
+        }
     }
     let Some(red) = reduction() else {
         return engine.run(aig, limits);
     };
-    match red.lift(aig, engine.run(&red.aig, limits)) {
+    let out = match (engine, lemmas) {
+        (Engine::Ic3, Some(store)) => {
+            let given = store.lemmas();
+            let out = crate::sat::with_limits(limits, || {
+                crate::ic3::ic3_with_lemmas(&red.aig, limits, &given)
+            });
+            if let Outcome::Proved(Some(inv)) = &out {
+                store.learn(inv, given.len());
+            }
+            out
+        }
+        _ => engine.run(&red.aig, limits),
+    };
+    match red.lift(aig, out) {
         Outcome::Unknown(why) if why == SPURIOUS => engine.run(aig, limits),
         out => out,
     }
@@ -156,7 +225,8 @@ fn run_property(
         };
     };
     let aig = shared.with_bad(k);
-    match run_with(engine, &aig, limits, || {
+    let ready = reductions.shared_ready();
+    match run_with(engine, &aig, limits, ready, Some(reductions), || {
         reductions.get_shared(bl, k, limits)
     }) {
         Outcome::Proved(Some(inv)) => {
@@ -236,6 +306,67 @@ pub fn decide(
 ) -> SymResult {
     let start = Instant::now();
     let (out, invariant) = run_property(bl, prop, engine, limits, reductions);
+    sym_result(p, bl, prop, kind, out, invariant, start)
+}
+
+/// BMC on several own properties of `bl` at once (`props`: index into `bl.props` and kind;
+/// built-ins are skipped, each has its own constraint): one unrolling of the shared problem
+/// ([`crate::bmc::bmc_many`]), so the witnesses of all of them cost the deepest one's
+/// unrolling. `open(n)` says whether `props[n]` is still wanted (asked before every query),
+/// `stop_of(n)` gives the flag that abandons a running query on it, and `found(n, result)`
+/// gets each shortest counterexample or witness as it is found.
+#[allow(clippy::too_many_arguments)] // reason: the program, its circuit, the selection, limits and three callbacks are all needed; a struct for one call site would only rename them
+pub fn bmc_shared(
+    p: &Program,
+    bl: &Blasted,
+    reductions: &Reductions,
+    props: &[(usize, PropKind)],
+    limits: &Limits,
+    open: &dyn Fn(usize) -> bool,
+    stop_of: &dyn Fn(usize) -> Option<Arc<std::sync::atomic::AtomicBool>>,
+    found: &mut dyn FnMut(usize, SymResult),
+) -> crate::bmc::ManyEnd {
+    let start = Instant::now();
+    let shared = reductions.shared(bl);
+    // Bad output j of the circuit below watches props[which[j]].
+    let mut which = Vec::new();
+    let mut g = shared.aig.clone();
+    g.bad.clear();
+    g.bad_names.clear();
+    for (n, &(prop, _)) in props.iter().enumerate() {
+        if let Some(k) = shared.bad_index.get(prop).copied().flatten() {
+            which.push(n);
+            g.bad.push(shared.aig.bad[k]);
+            g.bad_names
+                .push(shared.aig.bad_names.get(k).cloned().flatten());
+        }
+    }
+    crate::sat::with_limits(limits, || {
+        crate::bmc::bmc_many(
+            &g,
+            limits,
+            &|j| open(which[j]),
+            &|j| stop_of(which[j]),
+            &mut |j, t| {
+                let n = which[j];
+                let (prop, kind) = props[n];
+                let r = sym_result(p, bl, prop, kind, Outcome::Reached(t), None, start);
+                found(n, r);
+            },
+        )
+    })
+}
+
+/// The answer `out` of an engine for property `prop`, in the explicit engine's terms.
+fn sym_result(
+    p: &Program,
+    bl: &Blasted,
+    prop: usize,
+    kind: PropKind,
+    out: Outcome,
+    invariant: Option<(Aig, Invariant)>,
+    start: Instant,
+) -> SymResult {
     let sig = &bl.props[prop];
     let reach = sig.reachable;
     let mut r = PropResult {

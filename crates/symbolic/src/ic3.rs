@@ -87,6 +87,8 @@ pub struct Ic3Stats {
 
 struct Ic3<'a> {
     st: Ic3Stats,
+    /// Clauses known to hold in every reachable state (given by the caller), in every frame.
+    lemmas: Invariant,
     aig: &'a Aig,
     bad: Lit,
     coi: Vec<usize>,
@@ -133,12 +135,31 @@ pub fn ic3(aig: &Aig, limits: &Limits) -> Outcome {
     ic3_with_stats(aig, limits).0
 }
 
+/// [`ic3`], given `lemmas`: clauses over `aig`'s latches that hold in every reachable state
+/// and together are inductive (the invariants of other properties of the same circuit, under
+/// the same constraints). Every frame starts with them, on the current and the next state, so
+/// a proof need not rediscover them; the invariant of a proof includes them.
+pub fn ic3_with_lemmas(aig: &Aig, limits: &Limits, lemmas: &Invariant) -> Outcome {
+    run_ic3(aig, limits, lemmas).0
+}
+
 /// [`ic3`], with what the run did.
 pub fn ic3_with_stats(aig: &Aig, limits: &Limits) -> (Outcome, Ic3Stats) {
+    run_ic3(aig, limits, &Vec::new())
+}
+
+fn run_ic3(aig: &Aig, limits: &Limits, lemmas: &Invariant) -> (Outcome, Ic3Stats) {
     let Some(&bad) = aig.bad.first() else {
         return (Outcome::Proved(Some(Vec::new())), Ic3Stats::default());
     };
+    let n = aig.latches.len();
+    let lemmas: Invariant = lemmas
+        .iter()
+        .filter(|c| !c.is_empty() && c.iter().all(|&(j, _)| j < n))
+        .cloned()
+        .collect();
     let mut m = Ic3 {
+        lemmas,
         st: Ic3Stats::default(),
         aig,
         bad,
@@ -180,6 +201,32 @@ impl<'a> Ic3<'a> {
         for &c in &self.aig.constraints {
             let x = f.u.lit(&mut f.s, c, 0);
             f.s.add(&[x]);
+        }
+        for cl in &self.lemmas {
+            let now: Vec<SLit> = cl
+                .iter()
+                .map(|&(j, v)| {
+                    let x = f.u.lit(&mut f.s, Lit::var_lit(self.aig.latches[j].var), 0);
+                    if v {
+                        x
+                    } else {
+                        !x
+                    }
+                })
+                .collect();
+            f.s.add(&now);
+            let next: Vec<SLit> = cl
+                .iter()
+                .map(|&(j, v)| {
+                    let x = f.u.lit(&mut f.s, self.aig.latches[j].next, 0);
+                    if v {
+                        x
+                    } else {
+                        !x
+                    }
+                })
+                .collect();
+            f.s.add(&next);
         }
         if level == 0 {
             for &j in &self.coi {
@@ -617,14 +664,53 @@ impl<'a> Ic3<'a> {
                 }
                 self.frames[i] = stay;
                 if self.frames[i].is_empty() {
-                    let inv = self.frames[i + 1..]
+                    // The frames' clauses are inductive relative to the lemmas, which are
+                    // inductive themselves: together they are the invariant (lemmas last).
+                    let mut inv: Invariant = self.frames[i + 1..]
                         .iter()
                         .flatten()
                         .map(|c| c.iter().map(|&(j, v)| (j, !v)).collect())
                         .collect();
+                    inv.extend(self.lemmas.iter().cloned());
                     return Ok(Some(inv));
                 }
             }
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A one-hot shift register of four latches (latch 0 reset true, each next latch copies
+    /// the previous one, latch 0 becomes false): by hand, no two latches ever hold together.
+    fn chain(bad: (usize, usize)) -> Aig {
+        let mut g = Aig::new();
+        let l: Vec<Lit> = (0..4).map(|i| g.latch(Some(i == 0), None)).collect();
+        g.set_next(0, Lit::FALSE);
+        for i in 1..4 {
+            g.set_next(i, l[i - 1]);
+        }
+        let b = g.and(l[bad.0], l[bad.1]);
+        g.bad = vec![b];
+        g.bad_names = vec![None];
+        g
+    }
+
+    #[test]
+    fn a_proof_given_another_proofs_invariant_keeps_it_and_checks() {
+        let a = chain((0, 1));
+        let Outcome::Proved(Some(lemmas)) = ic3(&a, &Limits::default()) else {
+            panic!("latches 0 and 1 never hold together");
+        };
+        let b = chain((1, 2));
+        let Outcome::Proved(Some(inv)) = ic3_with_lemmas(&b, &Limits::default(), &lemmas) else {
+            panic!("latches 1 and 2 never hold together");
+        };
+        // The lemmas come last, unchanged, and the whole is an inductive invariant of `b`
+        // that excludes its bad states (the independent certificate check).
+        assert!(inv.ends_with(&lemmas));
+        assert!(crate::cert::check(&b, &inv).is_ok());
     }
 }

@@ -193,7 +193,7 @@ pub fn verify(
         (Engine::Explicit, _) => single::run_explicit(program, opts, events),
         _ if temporal => temporal::run(program, opts, events),
         (_, Some(e)) => single::run_engine(program, opts, e, events),
-        _ => portfolio::run_auto(program, opts, events),
+        _ => portfolio::run_auto(program, opts, events, started),
     }?;
     // A run the memory watchdog stopped hit the memory limit, whatever engine noticed first.
     let by_memory = opts

@@ -4,8 +4,11 @@
 //!
 //! The schedule takes the cheap wins first: the explicit engine and BMC start at once, IC3 and
 //! k-induction after a head start of [`HEAD_START`] (a small model is then decided by the
-//! explicit engine alone, at its own speed); every SAT engine goes over the properties in
+//! explicit engine alone, at its own speed); IC3 and k-induction go over the properties in
 //! passes with growing budgets (`schedule.rs`), so a hard property never starves the others.
+//! BMC first unrolls the circuit of all own properties once, asking every open one at each
+//! depth (its shortest traces for all of them for the price of the deepest), then takes what
+//! is left (the built-ins) through the same passes.
 //!
 //! Before any of that ([`crate::verify`] calls it first, for temporal rows too), the explicit
 //! engine alone gets [`QUICK_STATES`] states and [`QUICK_TIME`]: a small model is explored
@@ -21,8 +24,9 @@ use statecheck_explicit::{Progress, Report, Stats};
 use statecheck_ir::verdict::{PropKind, PropResult};
 use statecheck_ir::Program;
 use statecheck_symbolic::aig::Aig;
-use statecheck_symbolic::check::{problems, Engine, Reductions, SymResult};
+use statecheck_symbolic::check::{bmc_shared, problems, Engine, Reductions, SymResult};
 use statecheck_symbolic::engine::Invariant;
+use statecheck_symbolic::engine::Limits;
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::{mpsc, Arc};
 use std::time::{Duration, Instant};
@@ -50,10 +54,13 @@ enum Msg {
 }
 
 /// `--engine auto`.
+/// `origin`: the start of the whole run (before auto's quick pass), from which `decided_at_s`
+/// counts.
 pub(crate) fn run_auto(
     p: &Program,
     opts: &Options,
     events: &(dyn Fn(Event) + Sync),
+    origin: Instant,
 ) -> Result<Run, Error> {
     let started = Instant::now();
     let deadline = opts.check.timeout.map(|t| started + t);
@@ -138,9 +145,16 @@ pub(crate) fn run_auto(
                 if engine != Engine::Bmc {
                     order.sort_by_key(|&i| idx[i].1 == PropKind::Reachable);
                 }
-                schedule::run(&work, &order, events, &mut |i, r| {
+                let mut send = |i: usize, r: SymResult| {
                     let _ = tx.send(Msg::Symbolic(i, engine.as_str(), Box::new(r)));
-                });
+                };
+                if engine == Engine::Bmc {
+                    // All own properties in one unrolling (their shortest traces as it
+                    // reaches them); what it leaves (built-ins, or every property at a depth
+                    // bound) goes through the schedule below.
+                    bmc_all(&work, events, &mut send);
+                }
+                schedule::run(&work, &order, events, &mut send);
                 let _ = tx.send(Msg::Done);
             });
         }
@@ -176,7 +190,7 @@ pub(crate) fn run_auto(
                                 engine: "explicit",
                                 time_s: Some(t.as_secs_f64()),
                                 reason: None,
-                                decided_at_s: Some(started.elapsed().as_secs_f64()),
+                                decided_at_s: Some(origin.elapsed().as_secs_f64()),
                             };
                             if r.verdict.is_definitive() && got[i].is_none() {
                                 decide(i, r.clone(), m, None, &mut got);
@@ -189,7 +203,7 @@ pub(crate) fn run_auto(
                 }
                 Msg::Symbolic(i, engine, s) => {
                     let mut m = meta_of(engine, &s);
-                    m.decided_at_s = Some(started.elapsed().as_secs_f64());
+                    m.decided_at_s = Some(origin.elapsed().as_secs_f64());
                     if s.result.verdict.is_definitive() && got[i].is_none() {
                         decide(i, s.result, m, s.invariant, &mut got);
                     } else if engine == "ic3" || fallback[i].is_none() {
@@ -253,6 +267,36 @@ pub(crate) fn run_auto(
         meta,
         invariants,
     })
+}
+
+/// BMC over every property of `w` in one unrolling of the shared problem (built-ins, which
+/// have their own constraints, are left to the schedule).
+fn bmc_all(w: &Work, events: &(dyn Fn(Event) + Sync), send: &mut dyn FnMut(usize, SymResult)) {
+    let Some(first) = (0..w.idx.len()).find(|&i| !w.flags[i].load(Ordering::Relaxed)) else {
+        return;
+    };
+    events(Event::Working {
+        engine: Engine::Bmc.as_str(),
+        index: first,
+        budget: None,
+    });
+    let lim = Limits {
+        deadline: w.deadline,
+        attempt_deadline: None,
+        max_depth: w.max_depth,
+        stop: Some(Arc::new(AtomicBool::new(false))),
+    };
+    // The run's end raises every property's flag, so the open test below also ends the search.
+    let _ = bmc_shared(
+        w.program,
+        w.blasted,
+        w.reductions,
+        w.idx,
+        &lim,
+        &|i| !w.flags[i].load(Ordering::Relaxed) && !w.stop.load(Ordering::Relaxed),
+        &|i| Some(Arc::clone(&w.flags[i])),
+        send,
+    );
 }
 
 /// Auto's first pass: the explicit engine with at most [`QUICK_STATES`] states and

@@ -114,7 +114,7 @@ pub(crate) fn run(
             }
             match (opts.engine, opts.engine.symbolic()) {
                 (_, Some(e)) => single::run_engine(program, &safety_opts, e, events),
-                _ => portfolio::run_auto(program, &safety_opts, events),
+                _ => portfolio::run_auto(program, &safety_opts, events, Instant::now()),
             }
             .map(Some)
         });
