@@ -39,6 +39,41 @@ use statecheck_base::{Diagnostic, Span};
 use statecheck_syntax::ast;
 use std::collections::HashMap;
 
+/// Runs `f` with an expression checker of its own over the globals (the expansions before
+/// checking type their arguments with it) and returns its result and the diagnostics it
+/// collected.
+fn with_scratch_checker<R>(
+    globals: &Globals,
+    f: impl FnOnce(&mut ExprChecker) -> R,
+) -> (R, Vec<Diagnostic>) {
+    let mut sub = ExprChecker {
+        globals,
+        sink: Sink {
+            diags: Vec::new(),
+            muted: 0,
+        },
+        next_local: 0,
+    };
+    let r = f(&mut sub);
+    (r, sub.sink.diags)
+}
+
+/// Numbers the charts of `file` afresh, in order (after an expansion added or replaced
+/// charts); the first chart of a name keeps the name.
+fn number_charts(globals: &mut Globals, file: &ast::File) {
+    globals.chart_ids.clear();
+    let charts = file.items.iter().filter_map(|i| match i {
+        ast::Item::Chart(c) => Some(c),
+        _ => None,
+    });
+    for (id, c) in charts.enumerate() {
+        globals
+            .chart_ids
+            .entry(c.name.name.clone())
+            .or_insert(id as ChartId);
+    }
+}
+
 /// Check a parsed file. Always returns a model (possibly incomplete) and all diagnostics,
 /// including design-rule warnings; the model is usable only if no diagnostic is an error.
 pub fn check(file: &ast::File) -> (Model, Vec<Diagnostic>) {
@@ -62,17 +97,8 @@ pub fn check(file: &ast::File) -> (Model, Vec<Diagnostic>) {
     // Parameterised components become one component per argument list, arrays of
     // components get literal lengths (`composite/params.rs`).
     let comp_params = {
-        let view = globals.clone();
-        let mut sub = ExprChecker {
-            globals: &view,
-            sink: Sink {
-                diags: Vec::new(),
-                muted: 0,
-            },
-            next_local: 0,
-        };
-        let e = composite::expand_params(file, &mut sub);
-        early.extend(sub.sink.diags);
+        let (e, diags) = with_scratch_checker(&globals, |sub| composite::expand_params(file, sub));
+        early.extend(diags);
         e
     };
     let file = comp_params.as_ref().unwrap_or(file);
@@ -83,63 +109,24 @@ pub fn check(file: &ast::File) -> (Model, Vec<Diagnostic>) {
         None => (file, sys_origins),
     };
     // Interleaved systems get their scheduler input (`interleave.rs`).
-    let interleaved = {
-        let view = globals.clone();
-        let mut sub = ExprChecker {
-            globals: &view,
-            sink: Sink {
-                diags: Vec::new(),
-                muted: 0,
-            },
-            next_local: 0,
-        };
-        interleave::expand(file, &mut sub, &mut early)
-    };
+    let interleaved =
+        with_scratch_checker(&globals, |sub| interleave::expand(file, sub, &mut early)).0;
     let file = interleaved.as_ref().unwrap_or(file);
     // Parameterised charts become one ordinary chart per argument list (`params.rs`).
     let expanded = {
-        let view = globals.clone();
-        let mut sub = ExprChecker {
-            globals: &view,
-            sink: Sink {
-                diags: Vec::new(),
-                muted: 0,
-            },
-            next_local: 0,
-        };
-        let e = params::expand(file, &mut sub);
-        early.extend(sub.sink.diags);
+        let (e, diags) = with_scratch_checker(&globals, |sub| params::expand(file, sub));
+        early.extend(diags);
         e
     };
     let (file, origins) = match &expanded {
         Some(e) => {
-            globals.chart_ids.clear();
-            let charts = e.file.items.iter().filter_map(|i| match i {
-                ast::Item::Chart(c) => Some(c),
-                _ => None,
-            });
-            for (id, c) in charts.enumerate() {
-                globals
-                    .chart_ids
-                    .entry(c.name.name.clone())
-                    .or_insert(id as ChartId);
-            }
+            number_charts(&mut globals, &e.file);
             (&e.file, e.origins.as_slice())
         }
         None => {
             // The scheduler charts of interleaved systems are new charts.
             if interleaved.is_some() {
-                globals.chart_ids.clear();
-                let charts = file.items.iter().filter_map(|i| match i {
-                    ast::Item::Chart(c) => Some(c),
-                    _ => None,
-                });
-                for (id, c) in charts.enumerate() {
-                    globals
-                        .chart_ids
-                        .entry(c.name.name.clone())
-                        .or_insert(id as ChartId);
-                }
+                number_charts(&mut globals, file);
             }
             (file, &[][..])
         }
