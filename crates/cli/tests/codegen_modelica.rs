@@ -36,10 +36,19 @@ struct Loaded {
     src: Source,
 }
 
+/// A model file of the repository, its imports followed (spans are offsets into the text of
+/// all its files, as the CLI reads them).
 fn load(rel: &str, system: Option<&str>) -> Loaded {
     let path = repo_root().join(rel);
     let text = std::fs::read_to_string(&path).expect("model file");
-    load_text(rel, &text, system)
+    let program = statecheck_model::imports::load_with(&path.to_string_lossy(), text, |k| {
+        std::fs::read_to_string(k).ok()
+    });
+    assert!(
+        !program.diags.iter().any(Diagnostic::is_error),
+        "{rel}: syntax or import errors"
+    );
+    checked(rel, &program.file, &program.sources.text, system)
 }
 
 fn load_text(rel: &str, text: &str, system: Option<&str>) -> Loaded {
@@ -48,7 +57,16 @@ fn load_text(rel: &str, text: &str, system: Option<&str>) -> Loaded {
         !diags.iter().any(Diagnostic::is_error),
         "{rel}: syntax errors"
     );
-    let (model, diags) = statecheck_model::check(&file);
+    checked(rel, &file, text, system)
+}
+
+fn checked(
+    rel: &str,
+    file: &statecheck_syntax::ast::File,
+    text: &str,
+    system: Option<&str>,
+) -> Loaded {
+    let (model, diags) = statecheck_model::check(file);
     assert!(
         !diags.iter().any(Diagnostic::is_error),
         "{rel}: model errors"
