@@ -42,13 +42,7 @@ fn our_verdicts_equal_abc_pdr() {
         // The closed loops of master and FAMs (and the bug variants built on them) and the
         // largest synthesis family are beyond a CI budget for both tools; the benchmark
         // `crates/symbolic/benches/vs_abc.sh` compares the closed loop of master + 1 FAM.
-        // The WDS's configurations too: the plant's grids make the circuit deep (the collision
-        // is 161 ticks after the start; `docs/case-studies/wds.md` gives the SAT engines' figures).
-        if name.contains("FamSystem")
-            || name.contains("FamLive")
-            || name.contains("line_12")
-            || name.starts_with("examples/wds")
-        {
+        if name.contains("FamSystem") || name.contains("FamLive") || name.contains("line_12") {
             continue;
         }
         if ["fam_system2", "fam_system3", "fam_system4", "fam_system5"]

@@ -75,6 +75,12 @@ fn engines_agree_with_the_explicit_engine() {
     let mut proofs = 0;
     let mut cexs = 0;
     for f in &files {
+        // The WDS's configurations are beyond the SAT engines' 30 s here (the circuit of the
+        // plant's grids is deep: `docs/case-studies/wds.md`); `crates/cli/tests/wds.rs`
+        // compares BMC with the explicit engine on each pinned ordering instead.
+        if f.components().any(|c| c.as_os_str() == "wds") {
+            continue;
+        }
         let src = std::fs::read_to_string(f).expect("readable");
         // Follow imports (examples/fam's models import lib/).
         let program = statecheck_model::imports::load_with(&f.to_string_lossy(), src, |k| {
