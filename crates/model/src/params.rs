@@ -17,6 +17,31 @@ use statecheck_syntax::ast;
 use statecheck_syntax::ast::visit_mut::{walk_expr, VisitMut};
 use std::collections::HashMap;
 
+/// E0150 on the first of `args` given to `instance`, whose chart or component declares no
+/// parameters.
+pub(crate) fn refuse_arguments(
+    decl: &Decl,
+    instance: &ast::Ident,
+    args: &[ast::Arg],
+    ck: &mut ExprChecker,
+) {
+    let Some(a) = args.first() else { return };
+    let kind = decl.kind;
+    ck.sink.push(
+        Diagnostic::error(
+            "E0150",
+            format!("{kind} `{}` has no parameters", decl.name.name),
+            a.span,
+        )
+        .with_label(format!("argument to a {kind} without parameters"))
+        .with_secondary(decl.name.span, format!("{kind} declared here"))
+        .with_hint(format!(
+            "write `instance {}: {};`",
+            instance.name, decl.name.name
+        )),
+    );
+}
+
 /// What declares parameters: a chart or a component.
 pub(crate) struct Decl<'x> {
     /// `"chart"` or `"component"`, for the messages.
@@ -109,21 +134,12 @@ pub(crate) fn expand(file: &ast::File, ck: &mut ExprChecker<'_>) -> Option<Expan
                 continue; // the system checker reports the unknown chart
             };
             if c.params.is_empty() {
-                if let Some(a) = args.first() {
-                    ck.sink.push(
-                        Diagnostic::error(
-                            "E0150",
-                            format!("chart `{}` has no parameters", c.name.name),
-                            a.span,
-                        )
-                        .with_label("argument to a chart without parameters")
-                        .with_secondary(c.name.span, "chart declared here")
-                        .with_hint(format!(
-                            "write `instance {}: {};`",
-                            inst.name.name, c.name.name
-                        )),
-                    );
-                }
+                let decl = Decl {
+                    kind: "chart",
+                    name: &c.name,
+                    params: &c.params,
+                };
+                refuse_arguments(&decl, &inst.name, &args, ck);
                 continue;
             }
             let sig = &sigs[c.name.name.as_str()];

@@ -8,7 +8,7 @@
 //! missing (E0151), extra or unknown (E0150) or out-of-range argument.
 
 use crate::expr::ExprChecker;
-use crate::params::{bind, literal, named_copy, value_of, Decl, Subst, Value};
+use crate::params::{bind, literal, named_copy, refuse_arguments, value_of, Decl, Subst, Value};
 use crate::types::Type;
 use statecheck_base::Diagnostic;
 use statecheck_syntax::ast;
@@ -188,21 +188,12 @@ impl Expander<'_> {
             }
             let args = std::mem::take(&mut inst.args);
             if c.params.is_empty() {
-                if let Some(a) = args.first() {
-                    ck.sink.push(
-                        Diagnostic::error(
-                            "E0150",
-                            format!("component `{}` has no parameters", c.name.name),
-                            a.span,
-                        )
-                        .with_label("argument to a component without parameters")
-                        .with_secondary(c.name.span, "component declared here")
-                        .with_hint(format!(
-                            "write `instance {}: {};`",
-                            inst.name.name, c.name.name
-                        )),
-                    );
-                }
+                let decl = Decl {
+                    kind: "component",
+                    name: &c.name,
+                    params: &c.params,
+                };
+                refuse_arguments(&decl, &inst.name, &args, ck);
                 continue;
             }
             let Some(sig) = self.sigs.get(c.name.name.as_str()) else {
