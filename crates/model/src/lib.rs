@@ -51,6 +51,7 @@ fn with_scratch_checker<R>(
         sink: Sink {
             diags: Vec::new(),
             muted: 0,
+            once: Default::default(),
         },
         next_local: 0,
     };
@@ -155,6 +156,7 @@ pub fn check(file: &ast::File) -> (Model, Vec<Diagnostic>) {
         sink: Sink {
             diags: early,
             muted: 0,
+            once: Default::default(),
         },
         next_local: 1 << 20,
     };
@@ -451,6 +453,7 @@ fn check_consts_and_fns(file: &ast::File, g: &mut Globals, diags: &mut Vec<Diagn
             sink: Sink {
                 diags: Vec::new(),
                 muted: 0,
+                once: Default::default(),
             },
             next_local: 0,
         };

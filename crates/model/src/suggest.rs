@@ -17,8 +17,14 @@ pub fn closest<'a>(name: &str, candidates: impl Iterator<Item = &'a str>) -> Opt
     }
     let limit = if n <= 2 { 0 } else { (name.len() / 3).max(1) };
     let a: Vec<char> = name.to_lowercase().chars().collect();
+    let ascii = name.is_ascii();
     candidates
         .filter(|c| *c != name && !c.is_empty() && c.len() <= 4 * MAX_SUGGEST_LEN)
+        // Lower-casing keeps an ASCII name's length, so a candidate whose length differs by
+        // more than the allowed distance is dropped before any allocation (a flattened system
+        // has thousands of instance names, and one misspelt connection in a component is
+        // checked once per copy).
+        .filter(|c| !(ascii && c.is_ascii()) || c.len().abs_diff(n) <= limit)
         .filter_map(|c| {
             let b: Vec<char> = c.to_lowercase().chars().collect();
             distance_within(&a, &b, limit).map(|d| (d, c))

@@ -187,9 +187,11 @@ pub(crate) fn check_system(
                         listed.push(name.name.clone());
                         order.extend(g.first..g.first + g.len.unwrap_or(1));
                     }
-                    None => ck
-                        .sink
-                        .push(unknown_instance(&name.name, name.span, &group_order)),
+                    None => ck.sink.push(unknown_instance(
+                        &name.name,
+                        name.span,
+                        group_order.iter().map(String::as_str),
+                    )),
                 }
             }
             for g in &group_order {
@@ -385,10 +387,14 @@ fn check_connections(
 }
 
 /// "unknown instance" with a suggestion among the declared ones.
-fn unknown_instance(name: &str, span: statecheck_base::Span, declared: &[String]) -> Diagnostic {
+fn unknown_instance<'a>(
+    name: &str,
+    span: statecheck_base::Span,
+    declared: impl Iterator<Item = &'a str>,
+) -> Diagnostic {
     let mut d = Diagnostic::error("E0101", format!("unknown instance `{name}`"), span)
         .with_label("no instance of this name");
-    if let Some(c) = crate::suggest::closest(name, declared.iter().map(String::as_str)) {
+    if let Some(c) = crate::suggest::closest(name, declared) {
         d = d.with_hint(format!("did you mean `{c}`?"));
     }
     d
@@ -416,10 +422,15 @@ pub(crate) fn endpoint(
     }
     let seg = &p.segments[0];
     let Some(g) = groups.get(&seg.name.name) else {
-        let mut names: Vec<String> = groups.keys().cloned().collect();
-        names.sort();
-        ck.sink
-            .push(unknown_instance(&seg.name.name, seg.name.span, &names));
+        if !ck.sink.first("E0101", seg.name.span) {
+            return None;
+        }
+        // `closest` breaks ties by name, so the candidates need no sorting.
+        ck.sink.push(unknown_instance(
+            &seg.name.name,
+            seg.name.span,
+            groups.keys().map(String::as_str),
+        ));
         return None;
     };
     let chart = &scope.charts[g.chart as usize];

@@ -44,3 +44,33 @@ fn an_unknown_chart_name_reports_once() {
         ]
     );
 }
+
+/// A component whose connection names an unknown instance, flattened into 2^12 copies (the
+/// component `C12` runs alone: C0 holds one chart, Ck two Ck-1, so C12 holds 4096 copies of
+/// C0's connection). The error is reported once and searched for a suggestion once: before,
+/// every copy searched the 4096 flattened instance names (a fuzzed input like this one took
+/// 40 s in `check`).
+#[test]
+fn an_error_in_a_component_copied_4096_times_is_found_once() {
+    let mut src = String::from(
+        "chart Leaf { input a: bool = false; output b: bool = false; initial S; \
+         state S { during { b = a; } } }\n\
+         component C0 { input a: bool; output b: bool; instance sensor: Leaf; \
+         connect a -> sensro.a; connect sensor.b -> b; }\n",
+    );
+    for k in 1..=12 {
+        let p = k - 1;
+        src.push_str(&format!(
+            "component C{k} {{ input a: bool; output b: bool; instance x: C{p}; \
+             instance y: C{p}; connect a -> x.a; connect x.b -> y.a; connect y.b -> b; }}\n"
+        ));
+    }
+    let (file, parse) = statecheck_syntax::parse(&src);
+    assert!(parse.is_empty(), "{parse:?}");
+    let (_, diags) = statecheck_model::check(&file);
+    let unknown: Vec<_> = diags
+        .iter()
+        .filter(|d| d.is_error() && d.message == "unknown instance `sensro`")
+        .collect();
+    assert_eq!(unknown.len(), 1, "{diags:?}");
+}

@@ -17,6 +17,8 @@ pub(crate) struct Sink {
     pub diags: Vec<Diagnostic>,
     /// While > 0, diagnostics are dropped.
     pub muted: u32,
+    /// The (code, span) pairs [`Sink::first`] has seen.
+    pub once: std::collections::HashSet<(&'static str, Span)>,
 }
 
 impl Sink {
@@ -25,6 +27,15 @@ impl Sink {
         if self.muted == 0 {
             self.diags.push(d);
         }
+    }
+
+    /// True the first time `(code, span)` is asked. A component flattened into many copies
+    /// repeats its source spans, so an error in it would be found once per copy (and printed
+    /// once, after deduplication); callers ask this before building a costly diagnostic, such
+    /// as one with a "did you mean" search over thousands of flattened instance names.
+    pub fn first(&mut self, code: &'static str, span: Span) -> bool {
+        // While muted nothing is reported, so nothing is remembered either.
+        self.muted > 0 || self.once.insert((code, span))
     }
 }
 

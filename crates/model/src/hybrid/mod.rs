@@ -119,6 +119,7 @@ fn plan_file(
             sink: Sink {
                 diags: Vec::new(),
                 muted: 0,
+                once: Default::default(),
             },
             next_local: 0,
         },
