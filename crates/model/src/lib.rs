@@ -7,6 +7,7 @@
 //! past errors so one run shows them all. Design-rule checks (the Modelica paper's §3.1) live in
 //! [`lint`]. It decides nothing about *how* a step executes: that is the `ir` crate's job.
 
+mod arrays;
 mod cascade;
 mod chart;
 pub mod components;
@@ -147,6 +148,15 @@ pub fn check(file: &ast::File) -> (Model, Vec<Diagnostic>) {
         Some(d) => &d.file,
         None => file,
     };
+    // Arrays of variables become their elements, loops are unrolled (`arrays/`).
+    let unrolled = {
+        let placeholder = |id: usize| origins.get(id) == Some(&params::Origin::Placeholder);
+        let (e, diags) =
+            with_scratch_checker(&globals, |sub| arrays::expand(file, &placeholder, sub));
+        early.extend(diags);
+        e
+    };
+    let file = unrolled.as_ref().unwrap_or(file);
     let origin = |id: usize| origins.get(id).unwrap_or(&params::Origin::Plain);
     let globals_ref = &globals;
     let consts_snapshot = globals_ref.const_order.clone();
