@@ -71,6 +71,7 @@ pub(super) fn expand(
         emitted: 0,
         exhausted: false,
         quiet,
+        reported: HashSet::new(),
         ck,
     };
     x.visit_chart(c);
@@ -91,6 +92,8 @@ pub(super) struct Expander<'a, 'c, 'g> {
     pub exhausted: bool,
     /// A placeholder copy: indices out of range name element 0.
     pub quiet: bool,
+    /// Loops already reported (a loop inside another is unrolled once per outer value).
+    pub reported: HashSet<Span>,
     /// For constants and diagnostics.
     pub ck: &'c mut ExprChecker<'g>,
 }
@@ -200,6 +203,7 @@ impl Expander<'_, '_, '_> {
         let bad = |msg: String, at: Span, label: &str| {
             Diagnostic::error("E0187", msg, at).with_label(label.to_string())
         };
+        let first = self.reported.insert(span);
         if self.loops.contains(&var.name)
             || self.names.contains(&var.name)
             || self.arrays.contains_key(&var.name)
@@ -209,6 +213,9 @@ impl Expander<'_, '_, '_> {
             } else {
                 "a variable of the chart"
             };
+            if !first {
+                return;
+            }
             self.ck.sink.push(
                 bad(
                     format!("loop variable `{}` hides {what}", var.name),
@@ -220,6 +227,9 @@ impl Expander<'_, '_, '_> {
             return;
         }
         let (Some(a), Some(b)) = (constant(self.ck, &lo), constant(self.ck, &hi)) else {
+            if !first {
+                return;
+            }
             self.ck.sink.push(
                 bad(
                     "the bounds of a `for` loop must be compile-time constants".to_string(),

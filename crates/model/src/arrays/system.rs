@@ -176,10 +176,12 @@ impl Paths<'_, '_, '_> {
         }
     }
 
-    /// Where `p`'s `[*]` is and how many elements it stands for (after [`Paths::path`]).
-    fn star(&mut self, p: &ast::Path) -> Option<(Star, usize)> {
+    /// Where `p`'s `[*]` is and how many elements it stands for (after [`Paths::path`]);
+    /// `Ok(None)` when the instance or variable is unknown (the system checker reports it),
+    /// `Err` after reporting two `[*]`.
+    fn star(&mut self, p: &ast::Path) -> Result<Option<(Star, usize)>, ()> {
         let (Some(first), Some(second)) = (p.segments.first(), p.segments.get(1)) else {
-            return Some((Star::None, 0));
+            return Ok(Some((Star::None, 0)));
         };
         let on_inst = matches!(first.index, Some(ast::Index::All(_)));
         let on_var = matches!(second.index, Some(ast::Index::All(_)));
@@ -189,18 +191,18 @@ impl Paths<'_, '_, '_> {
                     .with_label("an instance array and an array variable")
                     .with_hint("connect element by element along one of them"),
             );
-            return None;
+            return Err(());
         }
         if on_var {
-            let n = self.array_len(&first.name.name, &second.name.name)?;
-            return Some((Star::Var, n));
+            let n = self.array_len(&first.name.name, &second.name.name);
+            return Ok(n.map(|n| (Star::Var, n)));
         }
         if on_inst {
             // An unknown instance or a non-array is reported by the system checker.
-            let n = self.insts.get(&first.name.name).and_then(|i| i.count)?;
-            return Some((Star::Instance, n));
+            let n = self.insts.get(&first.name.name).and_then(|i| i.count);
+            return Ok(n.map(|n| (Star::Instance, n)));
         }
-        Some((Star::None, 0))
+        Ok(Some((Star::None, 0)))
     }
 
     /// `c` rewritten into `out`: element names, and one connection per element for `[*]`.
@@ -210,8 +212,11 @@ impl Paths<'_, '_, '_> {
         if !(ok_from && ok_to) {
             return;
         }
-        let (Some((fs, fl)), Some((ts, tl))) = (self.star(&c.from), self.star(&c.to)) else {
-            // Reported, or an unknown instance the system checker reports as written.
+        let (Ok(from), Ok(to)) = (self.star(&c.from), self.star(&c.to)) else {
+            return;
+        };
+        let (Some((fs, fl)), Some((ts, tl))) = (from, to) else {
+            // An unknown instance the system checker reports as written.
             if self.star_free(&c) {
                 out.push(c);
             }
@@ -229,9 +234,10 @@ impl Paths<'_, '_, '_> {
                 }
             }
             (_, Star::None) => {
+                // (E0123 as before arrays: the connection checker's code for one sender.)
                 self.ck.sink.push(
                     Diagnostic::error(
-                        "E0188",
+                        "E0123",
                         "`[*]` on the sending side needs `[*]` on the receiving side",
                         c.span,
                     )
