@@ -11,3 +11,11 @@ chart Bad(N: int[1..4]) {
 system Sys {
   instance b: Bad(2);
 }
+interface I {
+  input v[2]: int[0..3];          // a port is one variable
+}
+component Comp {
+  output w[2]: bool;              // a port is one variable
+  instance b: Bad(1);
+  connect b.c[0] -> w;
+}

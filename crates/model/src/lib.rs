@@ -83,6 +83,7 @@ pub fn check(file: &ast::File) -> (Model, Vec<Diagnostic>) {
     let mut early = Vec::new();
     collect_globals(file, &mut globals, &mut early);
     check_consts_and_fns(file, &mut globals, &mut early);
+    arrays::refuse_port_arrays(file, &mut early);
     // Continuous variables become grid variables, modes and timers (`hybrid/`).
     let discretized = hybrid::discretize(file, &globals, &hybrid::before_expansion, &mut early);
     let file = match &discretized {

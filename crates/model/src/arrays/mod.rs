@@ -54,6 +54,32 @@ pub(crate) fn constant(ck: &mut ExprChecker<'_>, e: &ast::Expr) -> Option<i64> {
     v
 }
 
+/// E0184 for every array among the ports of components and the members of interfaces: a
+/// port is one variable (an array port would need element-wise wiring through the
+/// flattening; connect the inner instances' arrays instead).
+pub(crate) fn refuse_port_arrays(file: &ast::File, diags: &mut Vec<statecheck_base::Diagnostic>) {
+    let ports = file.items.iter().flat_map(|i| match i {
+        ast::Item::Component(c) => c.ports.iter().map(|p| (p, "a component")).collect(),
+        ast::Item::Interface(d) => d.members.iter().map(|p| (p, "an interface")).collect(),
+        _ => Vec::new(),
+    });
+    for (p, what) in ports {
+        if let Some(n) = &p.len {
+            diags.push(
+                statecheck_base::Diagnostic::error(
+                    "E0184",
+                    format!("port `{}` of {what} is an array", p.name.name),
+                    n.span(),
+                )
+                .with_label("a port is one variable")
+                .with_hint(
+                    "declare one port per element, or wire the inner instances' arrays inside the component",
+                ),
+            );
+        }
+    }
+}
+
 /// Expand the arrays and loops of `file`; `placeholder[i]` says the `i`-th chart is a copy
 /// with placeholder parameter values (checked for names and types only: its array problems
 /// are not reported). `None` when the file uses none of them.
