@@ -182,6 +182,10 @@ fn generated_code_mangles_element_names() {
     assert_eq!(code, 0, "{err}");
     let (code, modelica, err) = run(&["gen", "modelica", ARRAYS]);
     assert_eq!(code, 0, "{err}");
+    let rs = dir.join("rust");
+    let (code, _, err) = run(&["gen", "rust", ARRAYS, "-o", rs.to_str().expect("utf-8")]);
+    assert_eq!(code, 0, "{err}");
+    let rust = std::fs::read_to_string(rs.join("bus.rs")).expect("rust");
     let pml = dir.join("a.pml");
     let (code, _, err) = run(&[
         "export",
@@ -194,8 +198,10 @@ fn generated_code_mangles_element_names() {
     let header = std::fs::read_to_string(c.join("bus.h")).expect("header");
     let promela = std::fs::read_to_string(&pml).expect("promela");
     // Element `m.go[1]` is the identifier `m_go_1` in every target (a bracket in an
-    // identifier would not compile); the name as written stays in comments and strings.
+    // identifier would not compile; a clash with a scalar `go_1` would be numbered by
+    // `codegen::common::slot_fields`); the name as written stays in comments and strings.
     assert!(header.contains("m_go_1;"), "{header}");
+    assert!(rust.contains("pub m_go_1: u8,"), "{rust}");
     assert!(modelica.contains("m_go_1("), "{modelica}");
     assert!(promela.contains("m_go_1 = 0;"), "{promela}");
     let _ = std::fs::remove_dir_all(&dir);
