@@ -58,6 +58,12 @@ fn cases() -> Vec<(PathBuf, Option<&'static str>, Vec<PathBuf>)> {
         None,
         vec![root.join("tests/components/cell.scn")],
     ));
+    // Arrays of variables: elements named `go[0]` in the model, mangled in the C.
+    out.push((
+        root.join("tests/components/arrays.sc"),
+        None,
+        vec![root.join("tests/components/arrays.scn")],
+    ));
     // A parameterised component and an array of components; an interleaved system (the
     // scheduler is an input of the C step like any other).
     out.push((

@@ -487,9 +487,17 @@ impl Builder {
     fn block(&mut self, b: &Block, cx: &Ctx) {
         for s in &b.stmts {
             match s {
-                Stmt::Assign { target, value, .. } => {
+                Stmt::Assign {
+                    target,
+                    index,
+                    value,
+                    ..
+                } => {
                     let v = self.var(cx, &target.name);
                     self.hit(target.span, v);
+                    if let Some(i) = index {
+                        self.expr(i, cx);
+                    }
                     // `x += e` repeats the target with its span: counted once.
                     if let Expr::Binary(_, l, r, _) = value {
                         if matches!(&**l, Expr::Path(p) if p.span == target.span) {
@@ -514,6 +522,11 @@ impl Builder {
                     if let Some(o) = otherwise {
                         self.block(o, cx);
                     }
+                }
+                Stmt::For { lo, hi, body, .. } => {
+                    self.expr(lo, cx);
+                    self.expr(hi, cx);
+                    self.block(body, cx);
                 }
             }
         }

@@ -139,6 +139,7 @@ fn scheduler(name: &str, k: i64, at: Span) -> ast::Chart {
             kind: ast::VarKind::Input,
             is_event: false,
             name: ident("unit"),
+            len: None,
             ty: Some(ast::TypeExpr::Range {
                 lo: Box::new(ast::Expr::Int(0, at)),
                 hi: Box::new(ast::Expr::Int(k - 1, at)),

@@ -7,6 +7,7 @@
 //! past errors so one run shows them all. Design-rule checks (the Modelica paper's §3.1) live in
 //! [`lint`]. It decides nothing about *how* a step executes: that is the `ir` crate's job.
 
+mod arrays;
 mod cascade;
 mod chart;
 pub mod components;
@@ -83,6 +84,7 @@ pub fn check(file: &ast::File) -> (Model, Vec<Diagnostic>) {
     let mut early = Vec::new();
     collect_globals(file, &mut globals, &mut early);
     check_consts_and_fns(file, &mut globals, &mut early);
+    arrays::refuse_port_arrays(file, &mut early);
     // Continuous variables become grid variables, modes and timers (`hybrid/`).
     let discretized = hybrid::discretize(file, &globals, &hybrid::before_expansion, &mut early);
     let file = match &discretized {
@@ -148,6 +150,15 @@ pub fn check(file: &ast::File) -> (Model, Vec<Diagnostic>) {
         Some(d) => &d.file,
         None => file,
     };
+    // Arrays of variables become their elements, loops are unrolled (`arrays/`).
+    let unrolled = {
+        let placeholder = |id: usize| origins.get(id) == Some(&params::Origin::Placeholder);
+        let (e, diags) =
+            with_scratch_checker(&globals, |sub| arrays::expand(file, &placeholder, sub));
+        early.extend(diags);
+        e
+    };
+    let file = unrolled.as_ref().unwrap_or(file);
     let origin = |id: usize| origins.get(id).unwrap_or(&params::Origin::Plain);
     let globals_ref = &globals;
     let consts_snapshot = globals_ref.const_order.clone();

@@ -263,6 +263,9 @@ pub struct VarDecl {
     pub is_event: bool,
     /// The name.
     pub name: Ident,
+    /// `input rm[N]: T;`: an array of `N` variables `rm[0]` … `rm[N-1]` (a constant length,
+    /// expanded before checking, `docs/language.md` §5); `None` for a scalar.
+    pub len: Option<Expr>,
     /// The type (absent for events).
     pub ty: Option<TypeExpr>,
     /// Initial value; for inputs, the value used before any scenario sets one.
@@ -486,6 +489,9 @@ pub enum Stmt {
     Assign {
         /// The variable written.
         target: Ident,
+        /// `rm[k] = e;`: the element of an array variable written (a compile-time constant,
+        /// expanded before checking); `None` for a scalar.
+        index: Option<Box<Expr>>,
         /// The value.
         value: Expr,
         /// Whole statement.
@@ -506,6 +512,20 @@ pub enum Stmt {
         then: Block,
         /// Statements when false (an `else if` is a block holding one `If`).
         otherwise: Option<Block>,
+        /// Whole statement.
+        span: Span,
+    },
+    /// `for k in lo..hi { … }`: a compile-time loop, unrolled before checking with `k` bound
+    /// to `lo`, …, `hi - 1` (`docs/language.md` §8).
+    For {
+        /// The loop variable.
+        var: Ident,
+        /// The first value (a constant expression).
+        lo: Box<Expr>,
+        /// One past the last value (a constant expression).
+        hi: Box<Expr>,
+        /// The body, repeated once per value.
+        body: Block,
         /// Whole statement.
         span: Span,
     },

@@ -84,6 +84,7 @@ fn compound_assignment_desugars() {
         target,
         value,
         span,
+        ..
     } = &stmts[0]
     else {
         panic!("not an assignment")

@@ -1,48 +1,10 @@
-// lib/fam_system1.sc — master + 1 FAM on one LIN bus (App. A, C, D; ch. 6): the scheduler and
-// LIN driver MasterBus1 and the system FamSystem. Shared by ../fam_system.sc and the bug
-// variants, which import it after a modulus file (lib/modulus.sc or lib/thesis_modulus.sc)
-// and declare BUDGET (the controller's processing ticks per bus round).
+// lib/fam_system1.sc — master + 1 FAM on one LIN bus (App. A, C, D; ch. 6): the system
+// FamSystem, with the scheduler and LIN driver MasterBus(1) of lib/bus.sc. Shared by
+// ../fam_system.sc and the bug variants, which import it after a modulus file (lib/modulus.sc
+// or lib/thesis_modulus.sc) and declare BUDGET (the controller's processing ticks per bus
+// round).
 
-import "fam.sc";
-import "lin.sc";
-import "master.sc";
-import "tie.sc";
-
-// Scheduler + master LIN driver for 1 slave(s), Fig. D.1: request slots 0..0,
-// response slots 1..1, then BUDGET processing ticks. A request slot sends the
-// header and request field of that slave's controller (its outputs of the previous tick);
-// a response slot sends only the header. `corrupt` flips a bit of the request field.
-chart MasterBus1 {
-  input corrupt: bool = false;
-  input rm0: RunMode = STOP_STALL;
-  input sw0: bool = false;
-  input tp0: int[0..8191] = 0;
-  output slot: int[0..11] = 11;
-  output reqSel: int[0..5] = 0;      // k+1 in slave k's request slot
-  output rspSel: int[0..5] = 0;      // k+1 in slave k's response slot
-  output proc: bool = false;         // a processing tick
-  output hIdent: int[0..255] = IDLE;
-  output hB1: int[0..255] = IDLE;
-  output hB2: int[0..255] = IDLE;
-  output hCk: int[0..255] = IDLE;
-  initial run;
-  state run {
-    during {
-      slot = if slot + 1 >= 2 + BUDGET then 0 else slot + 1;
-      reqSel = if slot < 1 then slot + 1 else 0;
-      rspSel = if slot >= 1 && slot < 2 then slot - 0 else 0;
-      proc = slot >= 2;
-      hIdent = IDLE; hB1 = IDLE; hB2 = IDLE; hCk = IDLE;
-      if slot == 0 {
-        hIdent = identField(reqId(0));
-        hB1 = reqDb1(rm0, sw0, tp0);
-        hB2 = corruptByte(reqDb2(tp0), corrupt);
-        hCk = checksum2(reqDb1(rm0, sw0, tp0), reqDb2(tp0));
-      }
-      if slot == 1 { hIdent = identField(rspId(0)); }
-    }
-  }
-}
+import "bus.sc";
 
 // ---------------------------------------------------------------------------------------
 // Master + 1 FAM on one LIN bus: the closed loop the thesis could not verify (ch. 5, 7).
@@ -63,7 +25,7 @@ chart MasterBus1 {
 //  - the FAM starts at FAM_START (lib/lin.sc), its saved position, inside the flap range.
 system FamSystem {
   instance tie: Tie;
-  instance bus: MasterBus1;
+  instance bus: MasterBus(1);
   instance port: FamPort;
   instance fam: Fam(FAM_START);   // closed loop: starts at its saved position
   instance ctrl: Controller;
@@ -87,17 +49,17 @@ system FamSystem {
   connect port.rCk -> ctrl.sCk;
   connect bus.rspSel -> ctrl.rspSel;
   connect bus.proc -> ctrl.proc;
-  connect ctrl.runMode -> bus.rm0;
-  connect ctrl.swap -> bus.sw0;
-  connect ctrl.targetPos -> bus.tp0;
+  connect ctrl.runMode -> bus.rm[0];
+  connect ctrl.swap -> bus.sw[0];
+  connect ctrl.targetPos -> bus.tp[0];
   connect tie.low -> fam.saveFails;
   connect tie.low -> fam.otFault;
   connect tie.low -> fam.ccfFault;
   connect tie.low -> fam.powerLoss;
   order tie, bus, port, fam, ctrl;
 
-  connect tie.k0 -> port.sna;
-  connect tie.k0 -> ctrl.myId;
+  connect tie.k[0] -> port.sna;
+  connect tie.k[0] -> ctrl.myId;
   assume ctrl.ccm == 0 || ctrl.ccm == 500 || ctrl.ccm == 1000;
   // (written out as a sum; a call of a declared fn would be solved up front just the same)
   assume b(fam.stallNow) + b(fam.hslFault) + b(fam.epmFault) + b(fam.fbfFault)

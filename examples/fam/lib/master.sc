@@ -1,14 +1,14 @@
 // lib/master.sc — the master task: the controller `Controller` (one per slave) and its
 // procedures. Leaves to its importer, imported BEFORE this file: POS_TOP, MOD_TOP and mod12
-// (lib/modulus.sc or lib/thesis_modulus.sc). The scheduler + LIN driver MasterBus<N> is
-// in each system's file (lib/fam_system1.sc, ../fam_system2.sc ...); it reads BUDGET,
-// declared by the entry file (10; 5 in bug_short_timeout.sc).
+// (lib/modulus.sc or lib/thesis_modulus.sc). The scheduler + LIN driver MasterBus(N) is
+// in lib/bus.sc; it reads BUDGET, declared by the entry file (10; 5 in
+// bug_short_timeout.sc).
 
 // =======================================================================================
 // The master task (thesis App. D, ch. 3.2): one `Controller` per slave (the thesis: "it is
 // possible to use several instances of this controller in order to control several FAMs.
 // These instances share the same bus. That is why there is a need for a scheduler"), and the
-// scheduler + LIN driver `MasterBus<N>` (per N, in the system files).
+// scheduler + LIN driver `MasterBus(N)` (lib/bus.sc, written once for every N).
 // =======================================================================================
 //
 // Positions in the closed loop are SCALED DOWN by 10 (the thesis §5.1 shrank its counters the

@@ -9,7 +9,7 @@ fn calm(stall: bool, hsl: bool, epm: bool, fbf: bool, req: bool, rsp: bool) -> b
 
 system FamLive {
   instance tie: Tie;
-  instance bus: MasterBus1;
+  instance bus: MasterBus(1);
   instance port: FamPort;
   instance fam: Fam(FAM_START);   // closed loop: starts at its saved position
   instance ctrl: Controller;
@@ -33,17 +33,17 @@ system FamLive {
   connect port.rCk -> ctrl.sCk;
   connect bus.rspSel -> ctrl.rspSel;
   connect bus.proc -> ctrl.proc;
-  connect ctrl.runMode -> bus.rm0;
-  connect ctrl.swap -> bus.sw0;
-  connect ctrl.targetPos -> bus.tp0;
+  connect ctrl.runMode -> bus.rm[0];
+  connect ctrl.swap -> bus.sw[0];
+  connect ctrl.targetPos -> bus.tp[0];
   connect tie.low -> fam.saveFails;
   connect tie.low -> fam.otFault;
   connect tie.low -> fam.ccfFault;
   connect tie.low -> fam.powerLoss;
   order tie, bus, port, fam, ctrl;
 
-  connect tie.k0 -> port.sna;
-  connect tie.k0 -> ctrl.myId;
+  connect tie.k[0] -> port.sna;
+  connect tie.k[0] -> ctrl.myId;
   assume ctrl.ccm == 0 || ctrl.ccm == 500 || ctrl.ccm == 1000;
   // (written out as a sum; a call of a declared fn would be solved up front just the same)
   assume b(fam.stallNow) + b(fam.hslFault) + b(fam.epmFault) + b(fam.fbfFault)

@@ -17,10 +17,13 @@ pub(crate) fn check_block(ck: &mut ExprChecker, scope: &Scope, b: &ast::Block) -
 pub(super) fn check_stmt(ck: &mut ExprChecker, scope: &Scope, s: &ast::Stmt) -> Option<Stmt> {
     let chart = scope.chart?;
     match s {
+        // (Indices and loops are expanded before checking, `crate::arrays`.)
+        ast::Stmt::For { .. } => None,
         ast::Stmt::Assign {
             target,
             value,
             span,
+            ..
         } => {
             let value = ck.check(scope, value);
             let Some(v) = chart.var(&target.name) else {

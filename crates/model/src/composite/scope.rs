@@ -648,7 +648,14 @@ impl<'a, 'd> Flattener<'a, 'd> {
             component: c.name.name.clone(),
             port: p.clone(),
             instance: inst.name.name.clone(),
-            var: var.name.name.clone(),
+            // An array element (`cyl.x[2]`) by the name it has once arrays are expanded.
+            var: match &var.index {
+                Some(ast::Index::At(e)) => match **e {
+                    ast::Expr::Int(k, _) => crate::arrays::element(&var.name.name, k),
+                    _ => var.name.name.clone(),
+                },
+                _ => var.name.name.clone(),
+            },
             at,
         });
     }

@@ -130,6 +130,7 @@ impl Collector<'_> {
                         self.block(o);
                     }
                 }
+                ast::Stmt::For { body, .. } => self.block(body),
                 ast::Stmt::Raise { .. } => {}
             }
         }

@@ -61,11 +61,28 @@ pub fn stmt(s: &mut Stmt, at: Span) {
     match s {
         Stmt::Assign {
             target,
+            index,
             value,
             span,
         } => {
             ident(target, at);
+            if let Some(i) = index {
+                expr(i, at);
+            }
             expr(value, at);
+            *span = at;
+        }
+        Stmt::For {
+            var,
+            lo,
+            hi,
+            body,
+            span,
+        } => {
+            ident(var, at);
+            expr(lo, at);
+            expr(hi, at);
+            block(body, at);
             *span = at;
         }
         Stmt::Raise { event, span } => {
@@ -92,6 +109,9 @@ pub fn stmt(s: &mut Stmt, at: Span) {
 pub fn var_decl(v: &mut VarDecl, at: Span) {
     ident(&mut v.name, at);
     v.span = at;
+    if let Some(n) = &mut v.len {
+        expr(n, at);
+    }
     if let Some(t) = &mut v.ty {
         match t {
             TypeExpr::Bool(s) | TypeExpr::Int(s) => *s = at,

@@ -113,8 +113,18 @@ pub fn walk_type<V: VisitMut + ?Sized>(v: &mut V, t: &mut TypeExpr) {
 pub fn walk_block<V: VisitMut + ?Sized>(v: &mut V, b: &mut Block) {
     for s in &mut b.stmts {
         match s {
-            Stmt::Assign { value, .. } => v.visit_expr(value),
+            Stmt::Assign { index, value, .. } => {
+                if let Some(i) = index {
+                    v.visit_expr(i);
+                }
+                v.visit_expr(value);
+            }
             Stmt::Raise { .. } => {}
+            Stmt::For { lo, hi, body, .. } => {
+                v.visit_expr(lo);
+                v.visit_expr(hi);
+                v.visit_block(body);
+            }
             Stmt::If {
                 cond,
                 then,
@@ -240,8 +250,11 @@ pub fn walk_hybrid<V: VisitMut + ?Sized>(v: &mut V, h: &mut HybridElem) {
     }
 }
 
-/// A declaration's type and initial value.
+/// A declaration's array length, type and initial value.
 pub fn walk_var<V: VisitMut + ?Sized>(v: &mut V, d: &mut VarDecl) {
+    if let Some(n) = &mut d.len {
+        v.visit_expr(n);
+    }
     if let Some(t) = &mut d.ty {
         v.visit_type(t);
     }

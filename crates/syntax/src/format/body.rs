@@ -426,7 +426,7 @@ impl Printer<'_> {
         }
         let mut parts = Vec::with_capacity(b.stmts.len());
         for s in &b.stmts {
-            if matches!(s, Stmt::If { .. }) {
+            if matches!(s, Stmt::If { .. } | Stmt::For { .. }) {
                 return None;
             }
             parts.push(self.simple_stmt(s));
@@ -474,6 +474,21 @@ impl Printer<'_> {
                     self.line(*span, &t);
                 }
                 Stmt::If { .. } => self.if_stmt(s, true),
+                Stmt::For {
+                    var,
+                    lo,
+                    hi,
+                    body,
+                    span,
+                } => {
+                    self.start_line(span.start);
+                    let (lo, hi) = (self.expr(lo), self.expr(hi));
+                    self.out
+                        .push_str(&format!("for {} in {lo}..{hi} {{", var.name));
+                    self.open(body.span.start + 1);
+                    self.stmts(&body.stmts);
+                    self.close(body.span.end, "", span.end);
+                }
             }
         }
     }
@@ -518,19 +533,29 @@ impl Printer<'_> {
 
     /// An assignment's `x =` (or `x +=`, `x -=` as written) and its right-hand side.
     fn assign_parts<'e>(&self, s: &'e Stmt) -> (String, Option<&'e Expr>) {
-        let Stmt::Assign { target, value, .. } = s else {
+        let Stmt::Assign {
+            target,
+            index,
+            value,
+            ..
+        } = s
+        else {
             return (String::new(), None);
+        };
+        let name = match index {
+            Some(i) => format!("{}[{}]", target.name, self.expr(i)),
+            None => target.name.clone(),
         };
         // `x += e` is parsed into `x = x + e` whose left operand has the target's span.
         if let Expr::Binary(op @ (BinOp::Add | BinOp::Sub), l, r, _) = value {
             if let Expr::Path(p) = &**l {
                 if p.span == target.span && p.segments.len() == 1 {
                     let o = if *op == BinOp::Add { "+=" } else { "-=" };
-                    return (format!("{} {o}", target.name), Some(&**r));
+                    return (format!("{name} {o}"), Some(&**r));
                 }
             }
         }
-        (format!("{} =", target.name), Some(value))
+        (format!("{name} ="), Some(value))
     }
 
     /// An assignment or `raise` as one line, with compound assignments kept as written.
@@ -542,7 +567,7 @@ impl Printer<'_> {
                 format!("{head} {v};")
             }
             Stmt::Raise { event, .. } => format!("raise {};", event.name),
-            Stmt::If { .. } => String::new(),
+            Stmt::If { .. } | Stmt::For { .. } => String::new(),
         }
     }
 }

@@ -357,7 +357,12 @@ impl Printer<'_> {
             .as_ref()
             .map(|e| format!(" = {}", self.expr(e)))
             .unwrap_or_default();
-        format!("{kind} {}{ty}{init};", v.name.name)
+        let len = v
+            .len
+            .as_ref()
+            .map(|n| format!("[{}]", self.expr(n)))
+            .unwrap_or_default();
+        format!("{kind} {}{len}{ty}{init};", v.name.name)
     }
 
     /// A property: on one line, or with its main expression broken (see

@@ -600,7 +600,8 @@ impl Parser<'_> {
         );
     }
 
-    /// `stmt = IDENT ('=' | '+=' | '-=') expr ';' | 'raise' IDENT ';' | if_stmt`
+    /// `stmt = IDENT ['[' expr ']'] ('=' | '+=' | '-=') expr ';' | 'raise' IDENT ';' | if_stmt
+    /// | for_stmt`
     fn stmt(&mut self) -> PResult<Stmt> {
         let t = self.tok();
         match t.kind {
@@ -622,13 +623,60 @@ impl Parser<'_> {
                 self.leave();
                 r
             }
+            Tok::Ident
+                if self.text(t.span) == "for"
+                    && self.nth(1).kind == Tok::Ident
+                    && self.nth(2).kind == Tok::Kw(Kw::In) =>
+            {
+                if !self.enter() {
+                    self.skip_rest();
+                    return Err(super::Failed);
+                }
+                let r = self.for_stmt();
+                self.leave();
+                r
+            }
             _ => self.assign(),
         }
+    }
+
+    /// `'for' IDENT 'in' expr '..' expr block` (`for` is contextual; depth already entered).
+    fn for_stmt(&mut self) -> PResult<Stmt> {
+        let start = self.bump().span;
+        let var = self.expect_ident("the loop variable after `for`")?;
+        self.bump(); // `in`, checked by the caller
+        let lo = self.expr();
+        if self.eat(Tok::DotDot).is_none() {
+            let d = self
+                .expected_diag("`..` between the loop's bounds")
+                .with_hint(format!("write `for {} in 0..N {{ … }}`", var.name));
+            self.report(d);
+            return Err(super::Failed);
+        }
+        let hi = self.expr();
+        let body = self.block("after the loop's bounds")?;
+        Ok(Stmt::For {
+            var,
+            lo: Box::new(lo),
+            hi: Box::new(hi),
+            body,
+            span: self.span_from(start),
+        })
     }
 
     fn assign(&mut self) -> PResult<Stmt> {
         let id = self.bump();
         let target = self.ident_of(id);
+        let index = if self.eat(Tok::LBracket).is_some() {
+            let i = self.expr();
+            if self.eat(Tok::RBracket).is_none() {
+                self.report(self.expected_diag("`]` after the index"));
+                return Err(super::Failed);
+            }
+            Some(Box::new(i))
+        } else {
+            None
+        };
         let op = match self.peek() {
             Tok::Assign => None,
             Tok::PlusAssign => Some(BinOp::Add),
@@ -638,9 +686,7 @@ impl Parser<'_> {
                 let hint = match other {
                     Tok::EqEq => Some("did you mean `=`? `==` compares, `=` assigns"),
                     Tok::LParen => Some("a function call is not a statement"),
-                    Tok::Dot | Tok::LBracket => {
-                        Some("only plain variable names of the chart can be assigned")
-                    }
+                    Tok::Dot => Some("only plain variable names of the chart can be assigned"),
                     _ => None,
                 };
                 if let Some(h) = hint {
@@ -659,7 +705,7 @@ impl Parser<'_> {
                 let lhs = Expr::Path(Path {
                     segments: vec![PathSegment {
                         name: target.clone(),
-                        index: None,
+                        index: index.clone().map(crate::ast::Index::At),
                     }],
                     span: target.span,
                 });
@@ -669,6 +715,7 @@ impl Parser<'_> {
         self.expect_semi("after assignment");
         Ok(Stmt::Assign {
             target,
+            index,
             value,
             span: self.span_from(id.span),
         })

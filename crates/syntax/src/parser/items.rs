@@ -411,6 +411,7 @@ impl Parser<'_> {
                 kind,
                 is_event: true,
                 name,
+                len: None,
                 ty: None,
                 init: None,
                 control: None,
@@ -418,6 +419,19 @@ impl Parser<'_> {
             }
         } else {
             let name = self.expect_ident(&format!("a variable name or `event` after `{kw}`"))?;
+            let len = if self.eat(Tok::LBracket).is_some() {
+                let n = self.expr();
+                if self.eat(Tok::RBracket).is_none() {
+                    let d = self
+                        .expected_diag("`]` after the array length")
+                        .with_hint(format!("write `{kw} {}[N]: int[0..9];`", name.name));
+                    self.report(d);
+                    return Err(Failed);
+                }
+                Some(n)
+            } else {
+                None
+            };
             if self.eat(Tok::Colon).is_none() {
                 let d = self
                     .expected_diag("`:` and a type after the variable name")
@@ -438,6 +452,7 @@ impl Parser<'_> {
                 kind,
                 is_event: false,
                 name,
+                len,
                 ty: Some(ty),
                 init,
                 control: None,
@@ -470,6 +485,7 @@ impl Parser<'_> {
             kind: VarKind::Input,
             is_event: true,
             name,
+            len: None,
             ty: None,
             init: None,
             control: Some(control),

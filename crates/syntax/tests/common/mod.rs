@@ -255,7 +255,12 @@ impl Printer {
                         .as_ref()
                         .map(|e| format!(" = {}", expr(e)))
                         .unwrap_or_default();
-                    p.line(format!("{kind} {}: {t}{init}", v.name.name));
+                    let len = v
+                        .len
+                        .as_ref()
+                        .map(|n| format!("[{}]", expr(n)))
+                        .unwrap_or_default();
+                    p.line(format!("{kind} {}{len}: {t}{init}", v.name.name));
                 }
             }
             for prop in &c.properties {
@@ -421,9 +426,24 @@ impl Printer {
 
     fn stmt(&mut self, s: &Stmt) {
         match s {
-            Stmt::Assign { target, value, .. } => {
-                self.line(format!("{} = {}", target.name, expr(value)))
+            Stmt::Assign {
+                target,
+                index,
+                value,
+                ..
+            } => {
+                let i = index
+                    .as_ref()
+                    .map(|i| format!("[{}]", expr(i)))
+                    .unwrap_or_default();
+                self.line(format!("{}{i} = {}", target.name, expr(value)))
             }
+            Stmt::For {
+                var, lo, hi, body, ..
+            } => self.block(
+                &format!("for {} in {}..{}", var.name, expr(lo), expr(hi)),
+                body,
+            ),
             Stmt::Raise { event, .. } => self.line(format!("raise {}", event.name)),
             Stmt::If {
                 cond,
