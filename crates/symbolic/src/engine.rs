@@ -30,6 +30,9 @@ pub enum Outcome {
     Unknown(String),
 }
 
+/// The reason of an `unknown` when a SAT call gave no answer and no limit had expired.
+pub const SOLVER_FAILED: &str = "the SAT solver failed";
+
 /// Limits of a run.
 #[derive(Clone, Debug, Default)]
 pub struct Limits {
@@ -70,6 +73,14 @@ impl Limits {
             return Some("time budget of this attempt used up".into());
         }
         self.run_expired()
+    }
+
+    /// Why a SAT call answered "unknown": the limit that interrupted it (CaDiCaL's
+    /// terminator asks these limits inside the call, so a deadline, an attempt budget or a
+    /// stop flag raised by the memory watchdog ends the call this way), or, when no limit has
+    /// expired, a failure of the solver itself.
+    pub fn why_interrupted(&self) -> String {
+        self.expired().unwrap_or_else(|| SOLVER_FAILED.to_string())
     }
 
     /// Why work shared between attempts must stop now: the stop flag or the run's deadline.
