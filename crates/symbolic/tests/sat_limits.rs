@@ -30,9 +30,9 @@ fn pigeonhole() -> Aig {
         all.push(some);
     }
     for h in 0..HOLES {
-        for a in 0..PIGEONS {
-            for b in a + 1..PIGEONS {
-                let both = g.and(p[a][h], p[b][h]);
+        for (a, pa) in p.iter().enumerate() {
+            for pb in &p[a + 1..] {
+                let both = g.and(pa[h], pb[h]);
                 all.push(!both);
             }
         }
