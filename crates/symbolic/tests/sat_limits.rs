@@ -7,7 +7,7 @@
 
 use statecheck_symbolic::aig::{Aig, Lit};
 use statecheck_symbolic::check::Engine;
-use statecheck_symbolic::engine::{Limits, Outcome, SOLVER_FAILED};
+use statecheck_symbolic::engine::{Limits, Outcome, MEMORY_LIMIT, SOLVER_FAILED};
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::Arc;
 use std::time::{Duration, Instant};
@@ -103,4 +103,32 @@ fn a_stop_flag_raised_during_a_sat_call_is_reported_as_the_stop() {
         assert_ne!(why, SOLVER_FAILED, "{}", engine.as_str());
         assert_eq!(why, "another engine answered first", "{}", engine.as_str());
     }
+}
+
+#[test]
+fn the_memory_probe_stops_every_engine_inside_a_sat_call() {
+    // The probe is the process's; it answers "over" only on this test's thread (the other
+    // tests of this file run beside it) and only once a flag is raised 300 ms in, while the
+    // engine is inside its first SAT call: no watchdog thread, no stop flag.
+    let g = pigeonhole();
+    let me = std::thread::current().id();
+    let over = Arc::new(AtomicBool::new(false));
+    let probe_over = Arc::clone(&over);
+    statecheck_symbolic::engine::set_memory_probe(Some(Arc::new(move || {
+        std::thread::current().id() == me && probe_over.load(Ordering::Relaxed)
+    })));
+    for engine in ENGINES {
+        over.store(false, Ordering::Relaxed);
+        let raiser = {
+            let over = Arc::clone(&over);
+            std::thread::spawn(move || {
+                std::thread::sleep(Duration::from_millis(300));
+                over.store(true, Ordering::Relaxed);
+            })
+        };
+        let why = reason(engine.run(&g, &Limits::default()), engine);
+        let _ = raiser.join();
+        assert_eq!(why, MEMORY_LIMIT, "{}", engine.as_str());
+    }
+    statecheck_symbolic::engine::set_memory_probe(None);
 }
