@@ -47,7 +47,7 @@ impl Drop for Watchdog {
 /// CaDiCaL allocates in C++, out of sight of any Rust allocator, and grows in bursts (a
 /// frame's clauses, arrays doubled when the variables pass a power of two: hundreds of MB/s);
 /// the watchdog thread alone, which a loaded machine may schedule tens of milliseconds late,
-/// and the 20 ms relay to the per-property flags let BMC overshoot the cap by 14 %.
+/// and the 20 ms relay to the per-property flags would let it run on past the cap.
 fn probe(cancel: &Cancel, trigger: u64) -> statecheck_symbolic::engine::MemoryProbe {
     let cancel = cancel.clone();
     let origin = Instant::now();
