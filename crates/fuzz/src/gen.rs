@@ -4,9 +4,12 @@
 //! errors), `assume`s (input-only and state-dependent), `invariant`/`reachable`/`respond`
 //! properties and, in some models, `ltl`/`ctl`/`fair` declarations, a chart parameter (used in
 //! expressions, fixed differently per instance) and time units (`tick 100 ms;`, `after(200
-//! ms)`, `within 300 ms`). Optionally two instances connected in a system. Not generated:
-//! imports (file-level), `component` composites and `plant` charts with `continuous`
-//! variables. Also the generator of the codegen crate's differential test.
+//! ms)`, `within 300 ms`). Optionally two instances connected in a system, an interleaved
+//! system, a composite component (ports, parameters, nesting, instance arrays) and a hybrid
+//! plant (`continuous`, `grid`, `sensor`, `der`, `profile`), see [`extra`]. Not generated:
+//! imports (file-level). Also the generator of the codegen crate's differential test.
+
+mod extra;
 
 use rand::rngs::StdRng;
 use rand::{RngExt, SeedableRng};
@@ -354,11 +357,19 @@ impl Gen {
         self.model_with(false)
     }
 
-    /// A whole model with properties and assumes (and, if `temporal`, temporal properties).
+    /// A whole model with properties and assumes (and, if `temporal`, temporal properties);
+    /// with properties, some models also get a composite component, a hybrid plant or an
+    /// interleaved system ([`extra`]).
     pub fn model_with(&mut self, props: bool) -> String {
+        let (mut plant, mut composite, mut interleaved) = (false, false, false);
         if props {
             self.param = self.chance(25);
             self.time_units = self.chance(25);
+            composite = self.chance(20);
+            plant = self.chance(15);
+            interleaved = self.chance(15);
+            // A continuous variable's rates are per second: its model declares the tick.
+            self.time_units |= plant;
         }
         let body = self.level("", 0, false);
         let two = self.chance(30);
@@ -379,22 +390,48 @@ impl Gen {
         } else {
             ""
         };
-        let chart = format!(
+        let mut text = format!(
             "{tick}chart C{decl} {{\n  input event e0;\n  input event e1;\n  input a: int[-4..4] = 0;\n  input b: bool = false;\n  input c: int[-2..3] = 1;\n  output x: int[-20..20] = 0;\n  output y: int[0..7] = 0;\n  local f: bool = false;\n  local event le;\n  output event oe;\n  {body}\n}}\n"
         );
-        if two {
-            let sys_props = if props {
-                self.properties("p.", temporal)
-            } else {
-                String::new()
-            };
-            format!("{chart}\nsystem Two {{\n  instance p: C{pa};\n  instance q: C{qa};\n  connect p.x -> q.c;\n  connect p.oe -> q.e1;\n{sys_props}}}\n")
-        } else if props {
-            let sys_props = self.properties("p.", temporal);
-            format!("{chart}\nsystem One {{\n  instance p: C{pa};\n{sys_props}}}\n")
-        } else {
-            chart
+        if !two && !props {
+            return text;
         }
+        let sys_props = if props {
+            self.properties("p.", temporal)
+        } else {
+            String::new()
+        };
+        let mut extras = Vec::new();
+        if composite {
+            extras.push(self.composite());
+        }
+        if plant {
+            extras.push(self.plant());
+        }
+        let mut sys = String::new();
+        for e in &extras {
+            text.push_str(&e.items);
+            sys.push_str(&e.before);
+        }
+        sys.push_str(&format!("  instance p: C{pa};\n"));
+        if two {
+            sys.push_str(&format!(
+                "  instance q: C{qa};\n  connect p.x -> q.c;\n  connect p.oe -> q.e1;\n"
+            ));
+        }
+        for e in &extras {
+            sys.push_str(&e.after);
+        }
+        for e in &extras {
+            sys.push_str(&e.conns);
+        }
+        sys.push_str(&sys_props);
+        for e in &extras {
+            sys.push_str(&e.props);
+        }
+        let name = if two { "Two" } else { "One" };
+        let mode = if interleaved { " interleaved" } else { "" };
+        format!("{text}\nsystem {name}{mode} {{\n{sys}}}\n")
     }
 }
 

@@ -30,7 +30,7 @@ pub fn bmc(aig: &Aig, limits: &Limits) -> Outcome {
             Some(false) => {
                 s.add(&[!b]);
             }
-            None => return Outcome::Unknown("the SAT solver failed".into()),
+            None => return Outcome::Unknown(limits.why_interrupted()),
         }
         k += 1;
     }

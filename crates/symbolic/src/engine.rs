@@ -1,8 +1,39 @@
 //! What every engine answers, and the limits it runs under.
 
 use std::sync::atomic::{AtomicBool, Ordering};
-use std::sync::Arc;
+use std::sync::{Arc, RwLock};
 use std::time::Instant;
+
+/// A check of the process's memory limit: true once the process has grown past it.
+pub type MemoryProbe = Arc<dyn Fn() -> bool + Send + Sync>;
+
+/// The process's memory probe, installed by the edge that owns `--max-memory` (the resident
+/// set is the whole process's, and reading it is I/O, which this crate does not do).
+static MEMORY_PROBE: RwLock<Option<MemoryProbe>> = RwLock::new(None);
+
+/// Install (or, with `None`, remove) the process's memory probe. Every engine asks it
+/// synchronously, on its own thread, wherever it asks its other limits: between BMC frames
+/// and IC3 queries, and inside every SAT call through CaDiCaL's terminator. So a SAT engine
+/// stops within one unit of its own work of the limit being passed, however late a watchdog
+/// thread would be scheduled on a loaded machine. The probe should be cheap when called
+/// often (it may answer from a reading a millisecond old).
+pub fn set_memory_probe(probe: Option<MemoryProbe>) {
+    // A poisoned lock holds a valid `Option`: a panic elsewhere cannot corrupt it.
+    let mut g = MEMORY_PROBE.write().unwrap_or_else(|e| e.into_inner());
+    *g = probe;
+}
+
+/// Has the process passed its memory limit (false without a probe)?
+fn memory_exceeded() -> bool {
+    let probe = MEMORY_PROBE
+        .read()
+        .unwrap_or_else(|e| e.into_inner())
+        .clone();
+    probe.is_some_and(|p| p())
+}
+
+/// The reason of an `unknown` when the memory probe stopped the engine.
+pub const MEMORY_LIMIT: &str = "memory limit";
 
 /// A trace of the circuit reaching its bad output.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -29,6 +60,9 @@ pub enum Outcome {
     /// A limit stopped the engine; the text says which.
     Unknown(String),
 }
+
+/// The reason of an `unknown` when a SAT call gave no answer and no limit had expired.
+pub const SOLVER_FAILED: &str = "the SAT solver failed";
 
 /// Limits of a run.
 #[derive(Clone, Debug, Default)]
@@ -72,6 +106,14 @@ impl Limits {
         self.run_expired()
     }
 
+    /// Why a SAT call answered "unknown": the limit that interrupted it (CaDiCaL's
+    /// terminator asks these limits inside the call, so a deadline, an attempt budget or a
+    /// stop flag raised by the memory watchdog ends the call this way), or, when no limit has
+    /// expired, a failure of the solver itself.
+    pub fn why_interrupted(&self) -> String {
+        self.expired().unwrap_or_else(|| SOLVER_FAILED.to_string())
+    }
+
     /// Why work shared between attempts must stop now: the stop flag or the run's deadline.
     pub fn run_expired(&self) -> Option<String> {
         if self
@@ -80,6 +122,9 @@ impl Limits {
             .is_some_and(|s| s.load(Ordering::Relaxed))
         {
             return Some("another engine answered first".into());
+        }
+        if memory_exceeded() {
+            return Some(MEMORY_LIMIT.into());
         }
         match self.deadline {
             Some(d) if Instant::now() >= d => Some("time limit reached".into()),

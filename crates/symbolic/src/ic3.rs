@@ -398,7 +398,7 @@ impl<'a> Ic3<'a> {
         self.solvers[level]
             .s
             .solve(assumps)
-            .ok_or_else(|| "the SAT solver failed".to_string())
+            .ok_or_else(|| self.limits.why_interrupted())
     }
 
     /// Is `¬cube` inductive relative to `F_level`? On success, the literals of `cube` the

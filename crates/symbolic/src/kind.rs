@@ -42,7 +42,7 @@ pub fn kind(aig: &Aig, limits: &Limits) -> Outcome {
         match bs.solve(&[b]) {
             Some(true) => return Outcome::Reached(extract(&mut bu, &mut bs, k)),
             Some(false) => bs.add(&[!b]),
-            None => return Outcome::Unknown("the SAT solver failed".into()),
+            None => return Outcome::Unknown(limits.why_interrupted()),
         }
         // Step case: frames 0..=k free, bad only in frame k, states distinct.
         for &c in &aig.constraints {
@@ -64,7 +64,7 @@ pub fn kind(aig: &Aig, limits: &Limits) -> Outcome {
             match ss.solve(&[b]) {
                 Some(false) => return Outcome::Proved(None),
                 Some(true) => {}
-                None => return Outcome::Unknown("the SAT solver failed".into()),
+                None => return Outcome::Unknown(limits.why_interrupted()),
             }
             if let Some(why) = limits.expired() {
                 return Outcome::Unknown(why);
