@@ -129,3 +129,66 @@ fn replay(p: &Program, t: usize, r: &statecheck_ir::verdict::PropResult, what: &
         "{what}: the lasso satisfies the formula"
     );
 }
+
+/// A response that takes 101 ticks (bounded persistence, `live::persistence`). After `req`
+/// in `Idle`, `Busy` counts n from 0 to 100, one per tick, and sets `done` on leaving; `req`
+/// in `Busy` is ignored. By hand: a position with `req` and `Busy` active has `done` within
+/// 102 positions, whatever the inputs, so `answered` holds; the Büchi state of
+/// `F((req && in(Busy)) && G !done)` that reads `G !done` is a sink (absorbing). Without the
+/// `in(Busy)` guard the property is violated: `req` in tick 0 is not seen (R1), so no run
+/// starts and `done` never holds (lasso: `req`, then nothing) — bounded persistence must not
+/// prove that one.
+const SLOW: &str = r#"
+chart Slow {
+  input event req;
+  output n: int[0..100] = 0;
+  output done: bool = false;
+  initial Idle;
+  state Idle {
+    on req / { n = 0; done = false; } -> Busy;
+  }
+  state Busy {
+    on [n == 100] / { done = true; } -> Idle;
+    on [n < 100] / { n += 1; } -> Busy;
+  }
+}
+system SlowResponse {
+  instance c: Slow;
+  ltl answered: G((c.req && in(c.Busy)) => F c.done);
+  ltl answered_always: G(c.req => F c.done);
+}
+"#;
+
+#[test]
+fn bounded_persistence_proves_a_slow_response() {
+    use statecheck_symbolic::live::{justice_of, persistence, LiveOutcome};
+    let (file, _) = statecheck_syntax::parse(SLOW);
+    let (model, d) = statecheck_model::check(&file);
+    assert!(!d.iter().any(|d| d.is_error()), "{d:?}");
+    let p = statecheck_ir::lower(&model, &model.systems[0]).expect("lowers");
+    let bl = blast(&p);
+    let j = justice_of(&p, &bl, "answered")
+        .expect("property")
+        .expect("LTL");
+    let r = persistence(&j, &limits());
+    assert!(matches!(r, LiveOutcome::Proved), "{r:?}");
+    // k-liveness (which tries bounded persistence first) proves it too.
+    let t = p.temporal.iter().position(|t| t.name == "answered");
+    let r = decide(&p, &bl, t.expect("property"), Method::KLive, &limits());
+    assert_eq!(r.result.verdict, Verdict::Proved, "{:?}", r.reason);
+    // The violated one: never proved; liveness-to-safety with BMC finds the lasso.
+    let j = justice_of(&p, &bl, "answered_always")
+        .expect("property")
+        .expect("LTL");
+    let short = Limits {
+        deadline: Some(Instant::now() + Duration::from_secs(5)),
+        ..Limits::default()
+    };
+    let r = persistence(&j, &short);
+    assert!(matches!(r, LiveOutcome::Unknown(_)), "{r:?}");
+    let t = p.temporal.iter().position(|t| t.name == "answered_always");
+    let t = t.expect("property");
+    let r = decide(&p, &bl, t, Method::L2s(Engine::Bmc), &limits());
+    assert_eq!(r.result.verdict, Verdict::Violated, "{:?}", r.reason);
+    replay(&p, t, &r.result, "answered_always by bmc");
+}

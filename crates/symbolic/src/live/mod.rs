@@ -12,9 +12,11 @@
 
 mod l2s;
 mod monitor;
+mod persist;
 
 pub use l2s::{klive, l2s, L2s};
 pub use monitor::{monitor, Justice};
+pub use persist::persistence;
 
 use crate::blast::Blasted;
 use crate::check::{input_vectors, run_reduced, Engine, Reductions, SymResult};
@@ -120,6 +122,20 @@ pub fn check_justice(j: &Justice, method: Method, limits: &Limits) -> LiveOutcom
                 owned = j.without_compassion();
                 &owned
             };
+            // First bounded persistence ([`persistence`]), which needs no counter, with a
+            // quarter of the time left; it answers at once when it does not apply.
+            let quarter = [limits.deadline, limits.attempt_deadline]
+                .into_iter()
+                .flatten()
+                .min()
+                .map(|d| Instant::now() + d.saturating_duration_since(Instant::now()) / 4);
+            let first = match quarter {
+                Some(h) => limits.attempt_until(h),
+                None => limits.clone(),
+            };
+            if let LiveOutcome::Proved = persistence(j, &first) {
+                return LiveOutcome::Proved;
+            }
             // k doubles: a proof for some k is a proof for every larger one, and a counter
             // reached at k only says that k was too small, so a run whose acceptance fires
             // 100 times costs 8 IC3 calls instead of 101.
