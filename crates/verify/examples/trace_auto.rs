@@ -115,10 +115,8 @@ fn main() {
             engine,
             thread_cpu()
         ),
-        Event::Progress(p) => {
-            if last_depth.swap(p.depth, Ordering::Relaxed) != p.depth {
-                println!("{} explicit depth {} states {}", stamp(), p.depth, p.states);
-            }
+        Event::Progress(p) if last_depth.swap(p.depth, Ordering::Relaxed) != p.depth => {
+            println!("{} explicit depth {} states {}", stamp(), p.depth, p.states);
         }
         _ => {}
     };
