@@ -20,6 +20,17 @@ fn verdict(o: &Outcome) -> String {
     }
 }
 
+/// This thread's user plus system CPU seconds (Linux `/proc`; 0 elsewhere).
+fn thread_cpu() -> f64 {
+    let Ok(text) = std::fs::read_to_string("/proc/thread-self/stat") else {
+        return 0.0;
+    };
+    let rest = text.rsplit_once(')').map_or("", |(_, r)| r);
+    let f: Vec<&str> = rest.split_whitespace().collect();
+    let tick = |i: usize| f.get(i).and_then(|x| x.parse::<f64>().ok()).unwrap_or(0.0);
+    (tick(11) + tick(12)) / 100.0
+}
+
 fn main() {
     let args: Vec<String> = std::env::args().skip(1).collect();
     let Some(path) = args.first() else {
@@ -55,6 +66,7 @@ fn main() {
         deadline: Some(Instant::now() + Duration::from_secs(secs)),
         ..Limits::default()
     };
+    let cpu0 = thread_cpu();
     let r = match statecheck_symbolic::scorr::reduce(&aig, &lim()) {
         Ok(r) => r,
         Err(e) => {
@@ -69,6 +81,8 @@ fn main() {
         s.time.as_secs_f64()
     );
     let t = Instant::now();
+    let cpu1 = thread_cpu();
+    println!("scorr cpu {:.2} s", cpu1 - cpu0);
     if let Some(out) = std::env::var_os("REDUCED_AIG") {
         let bytes = statecheck_symbolic::aiger::binary(&r.aig, "reduced by scorr");
         if let Err(e) = std::fs::write(&out, bytes) {
@@ -87,8 +101,9 @@ fn main() {
     };
     let out = r.lift(&aig, out);
     println!(
-        "{engine} on reduced: {} in {:.2} s",
+        "{engine} on reduced: {} in {:.2} s (cpu {:.2} s)",
         verdict(&out),
-        t.elapsed().as_secs_f64()
+        t.elapsed().as_secs_f64(),
+        thread_cpu() - cpu1
     );
 }
