@@ -4,32 +4,13 @@
 //! once an element `x.go[1]` is read as `x.go_1`; the state count (12) and the verdicts are
 //! derived by hand in the model's comment.
 
-use serde_json::Value;
-use std::path::{Path, PathBuf};
-use std::process::Command;
+mod common;
 
-const BIN: &str = env!("CARGO_BIN_EXE_statecheck");
+use common::{run, summary_of, Summary};
+use serde_json::Value;
+
 const ARRAYS: &str = "tests/components/arrays.sc";
 const FLAT: &str = "tests/components/arrays_flat.sc";
-
-fn root() -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR")).join("../..")
-}
-
-/// Run the binary from the repository root; (exit code, stdout, stderr).
-fn run(args: &[&str]) -> (i32, String, String) {
-    let out = Command::new(BIN)
-        .current_dir(root())
-        .env("NO_COLOR", "1")
-        .args(args)
-        .output()
-        .expect("runs");
-    (
-        out.status.code().unwrap_or(-1),
-        String::from_utf8_lossy(&out.stdout).into_owned(),
-        String::from_utf8_lossy(&out.stderr).into_owned(),
-    )
-}
 
 /// `m.go[1]` → `m.go_1`: an array element after a `.` read as the flat twin's scalar
 /// (instance arrays such as `s[1]` are written alike in both files).
@@ -55,33 +36,12 @@ fn flat_name(name: &str) -> String {
 }
 
 /// (states, transitions, [(property, verdict, tick)]) of `verify --json`.
-type Summary = (u64, u64, Vec<(String, String, Option<u64>)>);
-
 fn summary(file: &str, engine: &str) -> Summary {
     let (code, out, err) = run(&["verify", "--engine", engine, "--json", file]);
     // The verdicts are read from the JSON (the exit code of an unreachable `reachable`
     // differs between engines); the run must not be a usage error.
     assert!(matches!(code, 0 | 1 | 3), "{file}: {err}");
-    let v: Value = serde_json::from_str(&out).unwrap_or_else(|e| panic!("{e}: {out}"));
-    let rows = v["results"]
-        .as_array()
-        .map(|a| {
-            a.iter()
-                .map(|r| {
-                    (
-                        r["property"].as_str().unwrap_or("?").to_string(),
-                        r["verdict"].as_str().unwrap_or("?").to_string(),
-                        r["tick"].as_u64(),
-                    )
-                })
-                .collect()
-        })
-        .unwrap_or_default();
-    (
-        v["stats"]["states"].as_u64().unwrap_or(0),
-        v["stats"]["transitions"].as_u64().unwrap_or(0),
-        rows,
-    )
+    summary_of(&out)
 }
 
 #[test]

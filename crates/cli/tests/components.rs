@@ -2,59 +2,17 @@
 //! instances of one parameterised chart gives the same verdicts, state counts and traces as
 //! the same system with the arguments substituted by hand (`tests/components/counters*.sc`).
 
+mod common;
+
+use common::{run, summary_of, Summary};
 use serde_json::Value;
-use std::path::{Path, PathBuf};
-use std::process::Command;
-
-const BIN: &str = env!("CARGO_BIN_EXE_statecheck");
-
-fn root() -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR")).join("../..")
-}
-
-/// Run the binary from the repository root; (exit code, stdout, stderr).
-fn run(args: &[&str]) -> (i32, String, String) {
-    let out = Command::new(BIN)
-        .current_dir(root())
-        .env("NO_COLOR", "1")
-        .args(args)
-        .output()
-        .expect("runs");
-    (
-        out.status.code().unwrap_or(-1),
-        String::from_utf8_lossy(&out.stdout).into_owned(),
-        String::from_utf8_lossy(&out.stderr).into_owned(),
-    )
-}
-
-/// Each property's name, verdict and the tick it was decided at.
-type Rows = Vec<(String, String, Option<u64>)>;
 
 /// (states, transitions, rows) of `verify --json`.
-fn summary(file: &str, engine: &str) -> (u64, u64, Rows) {
+fn summary(file: &str, engine: &str) -> Summary {
     let (code, out, err) = run(&["verify", "--engine", engine, "--json", file]);
     // `sum` is violated: exit 1.
     assert_eq!(code, 1, "{err}");
-    let v: Value = serde_json::from_str(&out).unwrap_or_else(|e| panic!("{e}: {out}"));
-    let results = v["results"]
-        .as_array()
-        .map(|a| {
-            a.iter()
-                .map(|r| {
-                    (
-                        r["property"].as_str().unwrap_or("?").to_string(),
-                        r["verdict"].as_str().unwrap_or("?").to_string(),
-                        r["tick"].as_u64(),
-                    )
-                })
-                .collect()
-        })
-        .unwrap_or_default();
-    (
-        v["stats"]["states"].as_u64().unwrap_or(0),
-        v["stats"]["transitions"].as_u64().unwrap_or(0),
-        results,
-    )
+    summary_of(&out)
 }
 
 #[test]

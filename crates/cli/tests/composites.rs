@@ -4,61 +4,26 @@
 //! flattened by hand, once each name path's `.` is read as `_`; its traces name signals by
 //! their path through the hierarchy.
 
-use serde_json::Value;
-use std::path::{Path, PathBuf};
-use std::process::Command;
+mod common;
 
-const BIN: &str = env!("CARGO_BIN_EXE_statecheck");
+use common::{run, summary_of, Summary};
+use serde_json::Value;
+
 const CELL: &str = "tests/components/cell.sc";
 const FLAT: &str = "tests/components/cell_flat.sc";
 
-fn root() -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR")).join("../..")
-}
-
-/// Run the binary from the repository root; (exit code, stdout, stderr).
-fn run(args: &[&str]) -> (i32, String, String) {
-    let out = Command::new(BIN)
-        .current_dir(root())
-        .env("NO_COLOR", "1")
-        .args(args)
-        .output()
-        .expect("runs");
-    (
-        out.status.code().unwrap_or(-1),
-        String::from_utf8_lossy(&out.stdout).into_owned(),
-        String::from_utf8_lossy(&out.stderr).into_owned(),
-    )
-}
-
 /// (states, transitions, [(property, verdict, tick)]) of `verify --json`, property names with
 /// `.` read as `_`.
-type Summary = (u64, u64, Vec<(String, String, Option<u64>)>);
-
 fn summary(file: &str, engine: &str) -> Summary {
     let (code, out, err) = run(&["verify", "--engine", engine, "--json", file]);
     // `never_empty_extended` is violated: exit 1.
     assert_eq!(code, 1, "{file}: {err}");
-    let v: Value = serde_json::from_str(&out).unwrap_or_else(|e| panic!("{e}: {out}"));
-    let rows = v["results"]
-        .as_array()
-        .map(|a| {
-            a.iter()
-                .map(|r| {
-                    (
-                        r["property"].as_str().unwrap_or("?").replace('.', "_"),
-                        r["verdict"].as_str().unwrap_or("?").to_string(),
-                        r["tick"].as_u64(),
-                    )
-                })
-                .collect()
-        })
-        .unwrap_or_default();
-    (
-        v["stats"]["states"].as_u64().unwrap_or(0),
-        v["stats"]["transitions"].as_u64().unwrap_or(0),
-        rows,
-    )
+    let (states, transitions, rows) = summary_of(&out);
+    let rows = rows
+        .into_iter()
+        .map(|(name, verdict, tick)| (name.replace('.', "_"), verdict, tick))
+        .collect();
+    (states, transitions, rows)
 }
 
 #[test]
@@ -270,28 +235,13 @@ const BANK_FLAT: &str = "tests/components/bank_flat.sc";
 fn bank_summary(file: &str, engine: &str) -> Summary {
     let (code, out, err) = run(&["verify", "--engine", engine, "--json", file]);
     assert_eq!(code, 1, "{file}: {err}");
-    let v: Value = serde_json::from_str(&out).unwrap_or_else(|e| panic!("{e}: {out}"));
-    let mut rows: Vec<(String, String, Option<u64>)> = v["results"]
-        .as_array()
-        .map(|a| {
-            a.iter()
-                .map(|r| {
-                    let name = r["property"].as_str().unwrap_or("?");
-                    (
-                        name.replace(['.', '[', ']'], "_"),
-                        r["verdict"].as_str().unwrap_or("?").to_string(),
-                        r["tick"].as_u64(),
-                    )
-                })
-                .collect()
-        })
-        .unwrap_or_default();
+    let (states, transitions, rows) = summary_of(&out);
+    let mut rows: Vec<_> = rows
+        .into_iter()
+        .map(|(name, verdict, tick)| (name.replace(['.', '[', ']'], "_"), verdict, tick))
+        .collect();
     rows.sort();
-    (
-        v["stats"]["states"].as_u64().unwrap_or(0),
-        v["stats"]["transitions"].as_u64().unwrap_or(0),
-        rows,
-    )
+    (states, transitions, rows)
 }
 
 #[test]
