@@ -265,6 +265,7 @@ pub fn run(a: VerifyArgs) -> Result<u8> {
         cex::Write {
             vcd: a.vcd,
             minimise: !a.no_minimise,
+            deadline: timeout.map(|t| started + t),
         },
         show,
     );

@@ -109,6 +109,18 @@ fn stop_tick(s: &Stop) -> u64 {
 /// that the target does not need undone. Returns `None` when the trace does not show the
 /// target in the first place (nothing to minimise against).
 pub fn minimise(program: &Program, vectors: &[Vec<i64>], target: &Target) -> Option<Vec<Vec<i64>>> {
+    minimise_until(program, vectors, target, None)
+}
+
+/// [`minimise`], giving up undoing further changes once `deadline` has passed (the result
+/// still shows the target: every change undone so far was checked to keep it).
+pub fn minimise_until(
+    program: &Program,
+    vectors: &[Vec<i64>],
+    target: &Target,
+    deadline: Option<std::time::Instant>,
+) -> Option<Vec<Vec<i64>>> {
+    let late = || deadline.is_some_and(|d| std::time::Instant::now() >= d);
     let n = vectors.len();
     let last = (n as u64).checked_sub(1)?;
     let mut steps = 0u64;
@@ -138,7 +150,7 @@ pub fn minimise(program: &Program, vectors: &[Vec<i64>], target: &Target) -> Opt
             } else {
                 v[t - 1][k]
             };
-            if v[t][k] == calm || steps >= MAX_STEPS {
+            if v[t][k] == calm || steps >= MAX_STEPS || late() {
                 continue;
             }
             let was = v[t][k];

@@ -7,7 +7,7 @@ use anyhow::Result;
 use statecheck_explicit::{PropKind, PropResult};
 use statecheck_ir::view::TraceView as Views;
 use statecheck_ir::Program;
-use statecheck_sim::minimise::{minimise, Target};
+use statecheck_sim::minimise::{minimise_until, Target};
 use statecheck_sim::{scenario, Options, ScenarioInputs, Stop, TickRecord};
 
 /// A counterexample or witness after replay.
@@ -21,6 +21,11 @@ pub struct Cex {
     /// Set when the simulator does not stop at the same property and tick (it stops earlier,
     /// at another property violated on the way).
     pub mismatch: Option<String>,
+    /// False when the time limit had passed before this counterexample's turn: its scenario
+    /// is written as the engine found it (not minimised) and not replayed, so `trace` is
+    /// empty (`--timeout` bounds the whole command, and minimising and replaying thousands of
+    /// counterexamples against thousands of properties is not bounded).
+    pub replayed: bool,
 }
 
 /// Create the counterexample directory (before the run, so that counterexamples can be
@@ -39,6 +44,9 @@ pub struct Write {
     pub vcd: bool,
     /// Keep inputs that do not matter at their previous value (`statecheck_sim::minimise`).
     pub minimise: bool,
+    /// The end of `--timeout`: a counterexample met after it is written but neither
+    /// minimised nor replayed ([`Cex::replayed`]).
+    pub deadline: Option<std::time::Instant>,
 }
 
 /// Write and replay the counterexample of one result, if it has one (the directory exists).
@@ -55,8 +63,14 @@ pub fn one(
         let Some(raw) = &r.counterexample else {
             return Ok(None);
         };
+        let late = write
+            .deadline
+            .is_some_and(|d| std::time::Instant::now() >= d);
+        if late {
+            return late_one(loaded, program, r, raw, dir).map(Some);
+        }
         let minimised = match Target::of(r) {
-            Some(t) if write.minimise => minimise(program, raw, &t),
+            Some(t) if write.minimise => minimise_until(program, raw, &t, write.deadline),
             _ => None,
         };
         let vectors = minimised.as_ref().unwrap_or(raw);
@@ -115,10 +129,7 @@ pub fn one(
         };
         let path = match dir {
             Some(d) => {
-                let file = format!("{d}/{}.scn", file_name(&r.name));
-                let mut text = scenario::format(&sc, program);
-                text.insert_str(0, &format!("# counterexample for `{}` ({}, {}): {} ticks; replay with\n#   statecheck sim {} --system {} --scenario {file}\n", r.name, r.kind.as_str(), r.verdict.as_str(), r.depth, loaded.path, program.name));
-                crate::outpath::write(std::path::Path::new(&file), text.as_bytes())?;
+                let file = write_scenario(loaded, program, r, &sc, d)?;
                 if vcd {
                     let vfile = format!("{d}/{}.vcd", file_name(&r.name));
                     let text = output::vcd::render(program, &views, &run.trace);
@@ -133,8 +144,50 @@ pub fn one(
             trace: run.trace,
             tick,
             mismatch,
+            replayed: true,
         }))
     }
+}
+
+/// Write the scenario of `r`'s counterexample into directory `d`; the file's path.
+fn write_scenario(
+    loaded: &Loaded,
+    program: &Program,
+    r: &PropResult,
+    sc: &scenario::Scenario,
+    d: &str,
+) -> Result<String> {
+    let file = format!("{d}/{}.scn", file_name(&r.name));
+    let mut text = scenario::format(sc, program);
+    text.insert_str(0, &format!("# counterexample for `{}` ({}, {}): {} ticks; replay with\n#   statecheck sim {} --system {} --scenario {file}\n", r.name, r.kind.as_str(), r.verdict.as_str(), r.depth, loaded.path, program.name));
+    crate::outpath::write(std::path::Path::new(&file), text.as_bytes())?;
+    Ok(file)
+}
+
+/// A counterexample met after the time limit: its scenario as the engine found it, written
+/// but not minimised or replayed.
+fn late_one(
+    loaded: &Loaded,
+    program: &Program,
+    r: &PropResult,
+    raw: &[Vec<i64>],
+    dir: Option<&str>,
+) -> Result<Cex> {
+    let sc = match r.loop_start {
+        Some(k) => scenario::from_lasso(program, raw, k as usize),
+        None => scenario::from_input_vectors(program, raw),
+    };
+    let path = match dir {
+        Some(d) => Some(write_scenario(loaded, program, r, &sc, d)?),
+        None => None,
+    };
+    Ok(Cex {
+        path,
+        trace: Vec::new(),
+        tick: r.depth.saturating_sub(1),
+        mismatch: None,
+        replayed: false,
+    })
 }
 
 fn describe(p: &Program, stop: &Stop) -> String {

@@ -70,6 +70,9 @@ pub fn run(a: &VerifyArgs, loaded: &Loaded, program: &Program, check: Options) -
     let write = cex::Write {
         vcd: a.vcd,
         minimise: !a.no_minimise,
+        // The distributed run's counterexamples come after it ends; they are few (one per
+        // violated property, walked back across workers) and are always replayed.
+        deadline: None,
     };
     let cexs: Vec<Option<cex::Cex>> = rep
         .results

@@ -304,7 +304,9 @@ pub fn tail(
                     r.depth,
                     p.tick_label(c.tick)
                 );
-                out.push_str(&table::render(p, &views, &c.trace, width));
+                if c.replayed {
+                    out.push_str(&table::render(p, &views, &c.trace, width));
+                }
                 if let Some(e) = &r.error {
                     let _ = writeln!(
                         out,
@@ -315,6 +317,13 @@ pub fn tail(
                 }
                 if let Some(m) = &c.mismatch {
                     let _ = writeln!(out, "note: {m}");
+                }
+                if !c.replayed {
+                    let _ = writeln!(
+                        out,
+                        "note: not minimised or replayed: the time limit had passed (replay \
+                         the scenario with `statecheck sim --scenario`)"
+                    );
                 }
             }
             None if explicit => {
