@@ -94,6 +94,9 @@ pub fn result_json(
         if let Some(m) = &c.mismatch {
             o["replay_note"] = json!(m);
         }
+        if !c.replayed {
+            o["replayed"] = json!(false);
+        }
     }
     if let Some(k) = r.loop_start {
         o["loop_start"] = json!(k);
