@@ -468,13 +468,7 @@ fn check_consts_and_fns(file: &ast::File, g: &mut Globals, diags: &mut Vec<Diagn
             },
             next_local: 0,
         };
-        let empty = Scope {
-            chart: None,
-            instances: None,
-            charts: &[],
-            locals: Vec::new(),
-            fn_limit: fns_before,
-        };
+        let empty = Scope::constants(fns_before);
         match item {
             ast::Item::Const(c) => {
                 let x = sub.check(&empty, &c.value);
@@ -507,13 +501,7 @@ fn check_consts_and_fns(file: &ast::File, g: &mut Globals, diags: &mut Vec<Diagn
                 let index = g.fns.get(&f.name.name).map_or(fns_before, |(i, _)| *i);
                 fns_before = fns_before.max(index + 1);
                 // Check the body once with opaque parameters, to report its errors here.
-                let mut scope = Scope {
-                    chart: None,
-                    instances: None,
-                    charts: &[],
-                    locals: Vec::new(),
-                    fn_limit: index,
-                };
+                let mut scope = Scope::constants(index);
                 for (i, p) in f.params.iter().enumerate() {
                     let ty = sub.resolve_type(&p.ty);
                     scope.locals.push((

@@ -406,13 +406,7 @@ pub(crate) fn value_of(
     ty: Type,
     what: &str,
 ) -> Option<Value> {
-    let empty = Scope {
-        chart: None,
-        instances: None,
-        charts: &[],
-        locals: Vec::new(),
-        fn_limit: usize::MAX,
-    };
+    let empty = Scope::constants(usize::MAX);
     let before = ck.sink.diags.len();
     let x = ck.check(&empty, e);
     if is_placeholder(&x) {

@@ -58,6 +58,21 @@ pub(crate) struct Scope<'a> {
     pub fn_limit: usize,
 }
 
+impl Scope<'static> {
+    /// A scope that sees only file-level declarations: constants, enums and the functions
+    /// before index `fn_limit` (`usize::MAX`: all of them). For constant expressions
+    /// (initial values, array lengths, arguments, bounds).
+    pub fn constants(fn_limit: usize) -> Scope<'static> {
+        Scope {
+            chart: None,
+            instances: None,
+            charts: &[],
+            locals: Vec::new(),
+            fn_limit,
+        }
+    }
+}
+
 impl<'a> Scope<'a> {
     /// A variable of this scope's chart.
     pub fn own_var(&self, name: &str) -> Option<VarId> {

@@ -20,13 +20,7 @@ pub(crate) fn check_system(
     let mut instances = Vec::new();
     let mut groups: HashMap<String, InstanceGroup> = HashMap::new();
     let mut group_order: Vec<String> = Vec::new();
-    let empty = Scope {
-        chart: None,
-        instances: None,
-        charts: &[],
-        locals: Vec::new(),
-        fn_limit: usize::MAX,
-    };
+    let empty = Scope::constants(usize::MAX);
     for inst in &s.instances {
         let Some(&chart) = ck.globals.chart_ids.get(&inst.chart.name) else {
             let mut d = Diagnostic::error(
@@ -468,16 +462,7 @@ pub(crate) fn endpoint(
             (g.first..g.first + len).collect()
         }
         (Some(ast::Index::At(e)), Some(len)) => {
-            let i = ck.const_value(
-                &Scope {
-                    chart: None,
-                    instances: None,
-                    charts: &[],
-                    locals: Vec::new(),
-                    fn_limit: usize::MAX,
-                },
-                e,
-            )?;
+            let i = ck.const_value(&Scope::constants(usize::MAX), e)?;
             if i < 0 || i >= len as i64 {
                 ck.sink.push(
                     Diagnostic::error(

@@ -41,13 +41,7 @@ pub(crate) fn element(name: &str, k: i64) -> String {
 
 /// The value of a constant expression, or `None` (nothing reported: the caller says why).
 pub(crate) fn constant(ck: &mut ExprChecker<'_>, e: &ast::Expr) -> Option<i64> {
-    let empty = Scope {
-        chart: None,
-        instances: None,
-        charts: &[],
-        locals: Vec::new(),
-        fn_limit: usize::MAX,
-    };
+    let empty = Scope::constants(usize::MAX);
     ck.sink.muted += 1;
     let v = ck.const_value(&empty, e);
     ck.sink.muted -= 1;

@@ -33,13 +33,7 @@ pub(crate) fn skeleton<'a>(
         properties: Vec::new(),
     };
     let mut seen: HashMap<&str, Span> = HashMap::new();
-    let empty = Scope {
-        chart: None,
-        instances: None,
-        charts: &[],
-        locals: Vec::new(),
-        fn_limit: usize::MAX,
-    };
+    let empty = Scope::constants(usize::MAX);
     // Initial values are checked once every variable is declared, so that one naming a
     // variable is reported as "not constant" rather than as an unknown name.
     let mut inits: Vec<(usize, &ast::Expr)> = Vec::new();
@@ -94,13 +88,7 @@ pub(crate) fn skeleton<'a>(
             }
             Some(e) if bad_type => {
                 // Still report unknown names in it, but not a mismatch with the unknown type.
-                let empty = Scope {
-                    chart: None,
-                    instances: None,
-                    charts: &[],
-                    locals: Vec::new(),
-                    fn_limit: usize::MAX,
-                };
+                let empty = Scope::constants(usize::MAX);
                 let _ = ck.check(&empty, e);
             }
             Some(e) => inits.push((chart.vars.len(), e)),

@@ -199,13 +199,7 @@ impl<'g> ExprChecker<'g> {
             ast::TypeExpr::Bool(_) => Type::Bool,
             ast::TypeExpr::Int(_) => Type::UNBOUNDED,
             ast::TypeExpr::Range { lo, hi, span } => {
-                let empty = Scope {
-                    chart: None,
-                    instances: None,
-                    charts: &[],
-                    locals: Vec::new(),
-                    fn_limit: usize::MAX,
-                };
+                let empty = Scope::constants(usize::MAX);
                 let l = self.const_value(&empty, lo);
                 let h = self.const_value(&empty, hi);
                 match (l, h) {

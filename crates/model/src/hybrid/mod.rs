@@ -55,13 +55,7 @@ pub(crate) struct Cx<'g, 'f> {
 impl Cx<'_, '_> {
     /// A constant integer expression (reports E0105 when it is not).
     fn konst(&mut self, e: &ast::Expr) -> Option<i64> {
-        let scope = Scope {
-            chart: None,
-            instances: None,
-            charts: &[],
-            locals: Vec::new(),
-            fn_limit: self.ck.globals.fns.len(),
-        };
+        let scope = Scope::constants(self.ck.globals.fns.len());
         self.ck.const_value(&scope, e)
     }
 
