@@ -205,26 +205,12 @@ impl<'a> Ic3<'a> {
         for cl in &self.lemmas {
             let now: Vec<SLit> = cl
                 .iter()
-                .map(|&(j, v)| {
-                    let x = f.u.lit(&mut f.s, Lit::var_lit(self.aig.latches[j].var), 0);
-                    if v {
-                        x
-                    } else {
-                        !x
-                    }
-                })
+                .map(|&(j, v)| latch_lit(self.aig, &mut f, j, v, false))
                 .collect();
             f.s.add(&now);
             let next: Vec<SLit> = cl
                 .iter()
-                .map(|&(j, v)| {
-                    let x = f.u.lit(&mut f.s, self.aig.latches[j].next, 0);
-                    if v {
-                        x
-                    } else {
-                        !x
-                    }
-                })
+                .map(|&(j, v)| latch_lit(self.aig, &mut f, j, v, true))
                 .collect();
             f.s.add(&next);
         }
@@ -245,14 +231,7 @@ impl<'a> Ic3<'a> {
             for cube in cubes {
                 let cl: Vec<SLit> = cube
                     .iter()
-                    .map(|&(j, v)| {
-                        let x = f.u.lit(&mut f.s, Lit::var_lit(self.aig.latches[j].var), 0);
-                        if v {
-                            !x
-                        } else {
-                            x
-                        }
-                    })
+                    .map(|&(j, v)| latch_lit(self.aig, &mut f, j, !v, false))
                     .collect();
                 f.s.add(&cl);
             }
@@ -268,23 +247,11 @@ impl<'a> Ic3<'a> {
     }
 
     fn cur(&mut self, level: usize, j: usize, v: bool) -> SLit {
-        let f = &mut self.solvers[level];
-        let x = f.u.lit(&mut f.s, Lit::var_lit(self.aig.latches[j].var), 0);
-        if v {
-            x
-        } else {
-            !x
-        }
+        latch_lit(self.aig, &mut self.solvers[level], j, v, false)
     }
 
     fn next(&mut self, level: usize, j: usize, v: bool) -> SLit {
-        let f = &mut self.solvers[level];
-        let x = f.u.lit(&mut f.s, self.aig.latches[j].next, 0);
-        if v {
-            x
-        } else {
-            !x
-        }
+        latch_lit(self.aig, &mut self.solvers[level], j, v, true)
     }
 
     fn add_clause(&mut self, level: usize, cube: &Cube) {
@@ -674,6 +641,22 @@ impl<'a> Ic3<'a> {
                 }
             }
         }
+    }
+}
+
+/// The literal of `f`'s solver saying latch `j` has value `v`, in the current state or, with
+/// `next`, in the next one (its next-state function).
+fn latch_lit(aig: &Aig, f: &mut Frame<'_>, j: usize, v: bool, next: bool) -> SLit {
+    let l = &aig.latches[j];
+    let x = if next {
+        f.u.lit(&mut f.s, l.next, 0)
+    } else {
+        f.u.lit(&mut f.s, Lit::var_lit(l.var), 0)
+    };
+    if v {
+        x
+    } else {
+        !x
     }
 }
 
