@@ -19,6 +19,8 @@ pub enum Engine {
     Kind,
     /// IC3/PDR.
     Ic3,
+    /// IC3 on a localization abstraction refined by counterexamples ([`crate::localize`]).
+    Cegar,
 }
 
 impl Engine {
@@ -28,6 +30,7 @@ impl Engine {
             Engine::Bmc => "bmc",
             Engine::Kind => "kind",
             Engine::Ic3 => "ic3",
+            Engine::Cegar => "cegar",
         }
     }
 
@@ -37,6 +40,7 @@ impl Engine {
             Engine::Bmc => crate::bmc::bmc(aig, limits),
             Engine::Kind => crate::kind::kind(aig, limits),
             Engine::Ic3 => crate::ic3::ic3(aig, limits),
+            Engine::Cegar => crate::localize::cegar(aig, limits),
         })
     }
 }
@@ -191,6 +195,16 @@ fn run_with(
             let given = store.lemmas();
             let out = crate::sat::with_limits(limits, || {
                 crate::ic3::ic3_with_lemmas(&red.aig, limits, &given)
+            });
+            if let Outcome::Proved(Some(inv)) = &out {
+                store.learn(inv, given.len());
+            }
+            out
+        }
+        (Engine::Cegar, Some(store)) => {
+            let given = store.lemmas();
+            let (out, _) = crate::sat::with_limits(limits, || {
+                crate::localize::cegar_with_lemmas(&red.aig, limits, &given)
             });
             if let Outcome::Proved(Some(inv)) = &out {
                 store.learn(inv, given.len());
