@@ -13,6 +13,9 @@ fn main() {
         timeout = args.get(i + 1).and_then(|s| s.parse().ok()).unwrap_or(300);
         args.drain(i..(i + 2).min(args.len()));
     }
+    // `--blasted`: localize the circuit as blasted instead of its reduction.
+    let blasted = args.iter().any(|a| a == "--blasted");
+    args.retain(|a| a != "--blasted");
     let Some(file) = args.first().cloned() else {
         eprintln!("usage: cegar_fam FILE [PROPERTY...] [--timeout S]");
         std::process::exit(2);
@@ -46,16 +49,23 @@ fn main() {
     );
     let t = Instant::now();
     let lim = Limits::default();
-    let Ok(red) = statecheck_symbolic::scorr::reduce(&shared.aig, &lim) else {
+    let red = if blasted {
+        None
+    } else {
+        statecheck_symbolic::scorr::reduce(&shared.aig, &lim).ok()
+    };
+    if !blasted && red.is_none() {
         eprintln!("reduction stopped");
         std::process::exit(1);
-    };
-    println!(
-        "{file}: latches {} -> {} after scorr ({:.1} s)",
-        red.stats.latches.0,
-        red.stats.latches.1,
-        t.elapsed().as_secs_f64()
-    );
+    }
+    if let Some(red) = &red {
+        println!(
+            "{file}: latches {} -> {} after scorr ({:.1} s)",
+            red.stats.latches.0,
+            red.stats.latches.1,
+            t.elapsed().as_secs_f64()
+        );
+    }
     for (i, prop) in bl.props.iter().enumerate() {
         if !wanted.is_empty() && !wanted.contains(&prop.name) {
             continue;
@@ -63,7 +73,10 @@ fn main() {
         let Some(k) = shared.bad_index[i] else {
             continue;
         };
-        let g = red.with_bad(k).aig;
+        let g = match &red {
+            Some(red) => red.with_bad(k).aig,
+            None => shared.with_bad(k),
+        };
         let lim = Limits {
             deadline: Some(Instant::now() + Duration::from_secs(timeout)),
             ..Limits::default()

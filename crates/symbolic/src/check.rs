@@ -181,7 +181,9 @@ fn run_with(
     if engine == Engine::Bmc {
         return engine.run(aig, limits);
     }
-    if !ready {
+    // Localization waits for the reduction: on the circuit as blasted a bad output reads
+    // most latches (`crate::localize`), so its quick attempt would be IC3's again.
+    if !ready && engine != Engine::Cegar {
         let quick = engine.run(aig, &limits.attempt_until(Instant::now() + QUICK));
         if !matches!(quick, Outcome::Unknown(_)) || limits.expired().is_some() {
             return quick;

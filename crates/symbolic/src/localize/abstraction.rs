@@ -12,12 +12,13 @@ pub(crate) struct Abstraction {
     pub origin: Vec<usize>,
 }
 
-/// The latches the bad outputs and constraints of `aig` read in the same tick (their
-/// combinational support: the search stops at latches, it does not follow next-state
-/// functions).
+/// The latches the bad outputs of `aig` read in the same tick (their combinational support:
+/// the search stops at latches, it does not follow next-state functions). Not those the
+/// constraints read: of a blasted model, "no run-time error" reads nearly every latch, and a
+/// freed latch under a constraint is still an over-approximation (the constraint only
+/// restricts the free value); refinement adds the ones a refutation needs.
 pub(crate) fn support(aig: &Aig) -> Vec<bool> {
-    let roots = aig.bad.iter().chain(&aig.constraints).copied();
-    comb_support(aig, roots)
+    comb_support(aig, aig.bad.iter().copied())
 }
 
 /// The latches the literals `roots` read in the same tick.

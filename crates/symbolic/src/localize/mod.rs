@@ -37,6 +37,9 @@ pub struct Stats {
 }
 
 /// Decide `aig.bad[0]` by localization abstraction and refinement (see the module docs).
+/// Meant for a circuit reduced by signal correspondence already (as [`crate::check`] runs
+/// it): on the circuit as blasted, a property's bad output reads most latches in the same
+/// tick (it watches the values the step computes), and there is little to abstract.
 pub fn cegar(aig: &Aig, limits: &Limits) -> Outcome {
     cegar_with_lemmas(aig, limits, &Vec::new()).0
 }
