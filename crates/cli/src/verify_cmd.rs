@@ -28,9 +28,9 @@ pub struct VerifyArgs {
     /// The `.sc` model file, or an AIGER file (`.aag` ASCII, `.aig` binary) of a hardware model
     /// checking problem.
     model: String,
-    /// The engine: `auto` (the default) runs the explicit engine, BMC, IC3 and k-induction
-    /// side by side; or explicit-state search alone, or one SAT engine: BMC, k-induction, IC3
-    /// (see docs/verification.md).
+    /// The engine: `auto` (the default) runs the explicit engine, BMC, IC3, k-induction and
+    /// IC3 on localization abstractions side by side; or explicit-state search alone, or one
+    /// SAT engine: BMC, k-induction, IC3, cegar (see docs/verification.md).
     #[arg(long, value_enum, default_value = "auto")]
     engine: symbolic::EngineArg,
     /// Write the inductive invariant IC3 found for the (single) property to FILE.
