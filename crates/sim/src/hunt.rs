@@ -62,7 +62,7 @@ impl Default for HuntOptions<'_> {
 }
 
 /// Default of [`HuntOptions::max_prefix`].
-pub const DEFAULT_MAX_PREFIX: usize = 400;
+pub const DEFAULT_MAX_PREFIX: usize = 1024;
 
 /// Default of [`HuntOptions::max_tail`].
 pub const DEFAULT_MAX_TAIL: usize = 4096;
@@ -224,7 +224,11 @@ fn draw_plan(
     source: &mut RandomInputs,
     max_prefix: usize,
 ) -> Option<Plan> {
-    let len = rng.random_range(0..=max_prefix);
+    // Log-uniform: short prefixes are tried most, long ones (a fault held through several
+    // bus rounds of five FAMs) still often.
+    let top = max_prefix.max(1).ilog2();
+    let cap = (1usize << rng.random_range(0..=top)).min(max_prefix);
+    let len = rng.random_range(0..=cap);
     let mut m = Machine::new(program);
     let mut v: Vec<i64> = program
         .inputs
@@ -235,8 +239,12 @@ fn draw_plan(
     let mut t = 0;
     // The draws depend on the state (state-dependent `assume`s): the prefix is run as drawn.
     while t < len {
-        source.next(t as u64, &m, &mut v).ok()?;
-        let scale = [1, 8, 32, 128][rng.random_range(0..4)];
+        // A new vector, or (one time in four) the previous one again: holds add up, so a
+        // vector is sometimes held far longer than one segment.
+        if segments.is_empty() || rng.random_range(0..4) != 0 {
+            source.next(t as u64, &m, &mut v).ok()?;
+        }
+        let scale = [1, 8, 32, 128, 512][rng.random_range(0..5)];
         let d = rng.random_range(1..=scale).min(len - t);
         let mut held = 0;
         while held < d && step(program, &mut m, &v) {
@@ -250,7 +258,7 @@ fn draw_plan(
     }
     let last = segments.last().map(|(v, _)| v.clone()).unwrap_or(v);
     let tail = match rng.random_range(0..4) {
-        0 | 1 => quiet(program, &last),
+        0 | 1 => quiet(program, rng, &last),
         2 => last,
         _ => {
             let mut w = last.clone();
@@ -261,8 +269,11 @@ fn draw_plan(
     Some(Plan { segments, tail })
 }
 
-/// `last` with every rated input at its likely value and every event absent.
-fn quiet(program: &Program, last: &[i64]) -> Vec<i64> {
+/// `last` with every rated input at its likely value, every event absent, and each other
+/// input at its initial value or its value in `last` (a coin flip each): a fault without a
+/// rate (an enumeration such as `fault: EnvFault = NONE`) is quiet at its initial value, a
+/// setpoint is kept at its last.
+fn quiet(program: &Program, rng: &mut rand::rngs::StdRng, last: &[i64]) -> Vec<i64> {
     program
         .inputs
         .iter()
@@ -270,6 +281,7 @@ fn quiet(program: &Program, last: &[i64]) -> Vec<i64> {
         .map(|(inp, &x)| match inp.rate {
             Some(r) => i64::from(r > 0.5),
             None if inp.is_event => 0,
+            None if rng.random_bool(0.5) => program.slots[inp.slot as usize].init,
             None => x,
         })
         .collect()

@@ -7,6 +7,13 @@ import "../fam_system.sc";
 fn calm(stall: bool, hsl: bool, epm: bool, fbf: bool, req: bool, rsp: bool) -> bool =
   !(stall || hsl || epm || fbf || req || rsp);
 
+// No fault input is raised in this tick but a stall at an end stop: the FAM (at `pos` after
+// the tick) is outside the flap's range [E1F, E1F + RANGE], where only a calibration run
+// goes (D.3.2.1: "move until the actuator recognizes stall detection").
+fn calmEnd(stall: bool, hsl: bool, epm: bool, fbf: bool, req: bool, rsp: bool,
+           pos: int[0..4095]) -> bool =
+  !(hsl || epm || fbf || req || rsp) && (!stall || !inRange(pos, E1F));
+
 system FamLive {
   instance tie: Tie;
   instance bus: MasterBus(1);
@@ -79,5 +86,41 @@ system FamLive {
   // FAM's position eventually equals the master's target for good.
   ltl reaches_target:
     F G (calm(fam.stallNow, fam.hslFault, fam.epmFault, fam.fbfFault, bus.corrupt, ctrl.corrupt) && ctrl.ccm == 500)
+    => F G fam.actualPos == ctrl.targetPos;
+
+  // The corrected statements (docs/case-studies/temporal.md, "Corrected formulas"). The three
+  // above are kept (names are contracts) and stay violated.
+
+  // The stall procedure completes unless the master has entered a permanent failure mode:
+  // there it requests FAILURE_RUN "until power off" (D.3.2.3), which has no stall detection
+  // (Table C.3), and never STOP_STALL. Expected to hold: out of HSL_PERM and FBF_PERM a
+  // stall flag seen in a calm run sends the master to STALL_ACK (calibAndStall checks
+  // rStall before the other phases), whose STOP_STALL clears it once the FAM stands.
+  ltl stall_procedure_completes_unless_permanent:
+    F G calm(fam.stallNow, fam.hslFault, fam.epmFault, fam.fbfFault, bus.corrupt, ctrl.corrupt)
+    => G((fam.stall && ctrl.phase != HSL_PERM && ctrl.phase != FBF_PERM)
+         => F(!fam.stall || ctrl.phase == HSL_PERM || ctrl.phase == FBF_PERM));
+
+  // After a failure is cleared the master recalibrates, with end stops: from some tick on
+  // the only fault is a stall outside the range (calmEnd), and a FAM that runs outside the
+  // range infinitely often stalls infinitely often (compassion, written in the formula).
+  // Expected to hold: a calibration run aims outside the range, so it ends in a stall (or
+  // bounces, D.3.2.1 note, and is retried from NORMAL, the compassion making one of the
+  // retries stall); the stall lies in the gray zone, so STALL_ACK re-references the end and
+  // goes to CLEAR_CALIB, whose CLEAR_NOT_CALIB clears notCalib, then NORMAL.
+  ltl recalibrates_with_end_stops:
+    (F G calmEnd(fam.stallNow, fam.hslFault, fam.epmFault, fam.fbfFault, bus.corrupt,
+                 ctrl.corrupt, fam.actualPos)
+     && (G F (fam.run && !inRange(fam.actualPos, E1F)) => G F fam.stall))
+    => G((ctrl.phase == FAIL_WAIT && (ctrl.rFail & MAJOR) == 0)
+         => F(ctrl.phase == NORMAL && !fam.notCalib));
+
+  // The FAM reaches a commanded target, with end stops (the assumptions above, and the CCM
+  // held at 500). Expected to hold: once calibrated (or in a permanent mode's FAILURE_RUN)
+  // the master commands the CCM's target inside the range and the FAM runs there and stays.
+  ltl reaches_target_with_end_stops:
+    (F G (calmEnd(fam.stallNow, fam.hslFault, fam.epmFault, fam.fbfFault, bus.corrupt,
+                  ctrl.corrupt, fam.actualPos) && ctrl.ccm == 500)
+     && (G F (fam.run && !inRange(fam.actualPos, E1F)) => G F fam.stall))
     => F G fam.actualPos == ctrl.targetPos;
 }
