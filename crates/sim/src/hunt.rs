@@ -12,7 +12,8 @@
 //! (every justice atom somewhere in the loop, every compassion trigger there answered). A
 //! violating lasso is shortened ([`shrink`]: segments removed and halved while it still
 //! violates the property) and confirmed by replaying its scenario ([`crate::lasso::run_lasso`])
-//! before it is reported.
+//! before it is reported. Half the attempts start from a kept run ([`Corpus`]) that reached a
+//! valuation of the atoms no run had reached before, and extend it.
 //!
 //! Why this finds the FAM's lassos: their violations are "a fault pattern, then calm for
 //! ever", and a pattern is a few held segments (a stall, a failure held through two bus
@@ -27,7 +28,7 @@ use crate::scenario::from_lasso;
 use rand::{RngExt, SeedableRng};
 use statecheck_ir::temporal::{holds_on_lasso, Ltl, TemporalFormula};
 use statecheck_ir::{eval, ExprId, Machine, Program};
-use std::collections::HashMap;
+use std::collections::{HashMap, HashSet};
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::time::Instant;
 
@@ -171,6 +172,7 @@ pub fn hunt(
         }
     }
     let mut stats = HuntStats::default();
+    let mut corpus = Corpus::default();
     let over = |stats: &HuntStats| {
         opts.stop.is_some_and(|s| s.load(Ordering::Relaxed))
             || opts.deadline.is_some_and(|d| Instant::now() >= d)
@@ -187,10 +189,24 @@ pub fn hunt(
         } else {
             &mut even
         };
-        let Some(plan) = draw_plan(program, &mut rng, source, opts.max_prefix) else {
+        // Half the attempts extend a run that reached a new valuation of the atoms.
+        let base = if !corpus.entries.is_empty() && rng.random_bool(0.5) {
+            let i = rng.random_range(0..corpus.entries.len());
+            Some(corpus.entries[i].clone())
+        } else {
+            None
+        };
+        let Some(plan) = draw_plan(program, &mut rng, source, opts.max_prefix, base) else {
             continue;
         };
-        let Some(closed) = play(program, &atoms, &plan, opts.max_tail, &mut stats) else {
+        let Some(closed) = play(
+            program,
+            &atoms,
+            &plan,
+            opts.max_tail,
+            &mut stats,
+            Some(&mut corpus),
+        ) else {
             continue;
         };
         stats.loops += 1;
@@ -217,26 +233,82 @@ pub fn hunt(
     stats
 }
 
-/// A random plan: segments of held vectors up to a random total length, and a tail vector.
+/// Most runs kept in a [`Corpus`].
+const CORPUS_SIZE: usize = 512;
+
+/// Beginnings of runs worth extending: each reached a valuation of the atoms (the hunted
+/// formulas' and the fairness constraints') that no run had reached before, as coverage-guided
+/// fuzzing keeps inputs that cover something new. A violation that needs nested conditions (a
+/// stall, then a permanent failure mode while the stall flag is still set, then calm) is found
+/// a step at a time: each step is a new valuation, kept and extended later.
+#[derive(Default)]
+struct Corpus {
+    entries: Vec<Vec<(Vec<i64>, usize)>>,
+    seen: HashSet<Vec<bool>>,
+}
+
+impl Corpus {
+    /// Note the valuation `sig` after tick `tick` of `plan` (whose prefix has `prefix` ticks),
+    /// keeping the run up to that tick when the valuation is new.
+    fn note(&mut self, sig: &[bool], plan: &Plan, prefix: usize, tick: usize) {
+        if self.seen.contains(sig) || self.seen.len() >= 1 << 16 {
+            return;
+        }
+        self.seen.insert(sig.to_vec());
+        let mut kept: Vec<(Vec<i64>, usize)> = Vec::new();
+        let mut left = tick + 1;
+        for (v, d) in &plan.segments {
+            if left == 0 {
+                break;
+            }
+            let d = (*d).min(left);
+            kept.push((v.clone(), d));
+            left -= d;
+        }
+        if left > 0 && tick >= prefix {
+            kept.push((plan.tail.clone(), left));
+        }
+        if self.entries.len() < CORPUS_SIZE {
+            self.entries.push(kept);
+        } else {
+            let i = self.seen.len() % CORPUS_SIZE;
+            self.entries[i] = kept;
+        }
+    }
+}
+
+/// A random plan: segments of held vectors up to a random total length (after the segments of
+/// `base`, when given), and a tail vector.
 fn draw_plan(
     program: &Program,
     rng: &mut rand::rngs::StdRng,
     source: &mut RandomInputs,
     max_prefix: usize,
+    base: Option<Vec<(Vec<i64>, usize)>>,
 ) -> Option<Plan> {
     // Log-uniform: short prefixes are tried most, long ones (a fault held through several
     // bus rounds of five FAMs) still often.
     let top = max_prefix.max(1).ilog2();
     let cap = (1usize << rng.random_range(0..=top)).min(max_prefix);
-    let len = rng.random_range(0..=cap);
     let mut m = Machine::new(program);
     let mut v: Vec<i64> = program
         .inputs
         .iter()
         .map(|i| program.slots[i.slot as usize].init)
         .collect();
-    let mut segments: Vec<(Vec<i64>, usize)> = Vec::new();
+    let segments: Vec<(Vec<i64>, usize)> = base.unwrap_or_default();
     let mut t = 0;
+    for (w, d) in &segments {
+        for _ in 0..*d {
+            if !step(program, &mut m, w) {
+                return None;
+            }
+        }
+        t += d;
+        v.clone_from(w);
+    }
+    let mut segments = segments;
+    let len = t + rng.random_range(0..=cap);
     // The draws depend on the state (state-dependent `assume`s): the prefix is run as drawn.
     while t < len {
         // A new vector, or (one time in four) the previous one again: holds add up, so a
@@ -310,7 +382,15 @@ fn play(
     plan: &Plan,
     max_tail: usize,
     stats: &mut HuntStats,
+    mut corpus: Option<&mut Corpus>,
 ) -> Option<Closed> {
+    let w = atoms.exprs.len();
+    let prefix: usize = plan.segments.iter().map(|(_, d)| d).sum();
+    let mut note = |values: &[bool], tick: usize| {
+        if let Some(c) = corpus.as_deref_mut() {
+            c.note(&values[tick * w..(tick + 1) * w], plan, prefix, tick);
+        }
+    };
     let mut m = Machine::new(program);
     let mut inputs: Vec<Vec<i64>> = Vec::new();
     let mut values: Vec<bool> = Vec::new();
@@ -322,6 +402,7 @@ fn play(
             }
             inputs.push(v.clone());
             atoms.record(program, m.slots(), &mut values);
+            note(&values, inputs.len() - 1);
         }
     }
     let prefix = inputs.len();
@@ -339,6 +420,7 @@ fn play(
         let j = inputs.len();
         inputs.push(plan.tail.clone());
         atoms.record(program, m.slots(), &mut values);
+        note(&values, j);
         if let Some(&i) = seen.get(m.state()) {
             // State after tick j == state after tick i, with the same inputs from tick i + 1
             // on: ticks i + 1 ..= j repeat for ever.
@@ -396,7 +478,7 @@ fn shrink(program: &Program, atoms: &Atoms, mut plan: Plan, mut best: Closed, f:
             for p in tries {
                 replays += 1;
                 let tail = best.inputs.len() * 2 + 16;
-                if let Some(c) = play(program, atoms, &p, tail, &mut scratch) {
+                if let Some(c) = play(program, atoms, &p, tail, &mut scratch, None) {
                     if c.inputs.len() < best.inputs.len() && violates(program, atoms, &c, f) {
                         plan = p;
                         best = c;
