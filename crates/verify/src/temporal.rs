@@ -154,7 +154,8 @@ pub(crate) fn run(
 /// The methods each SAT engine runs on an LTL row.
 fn methods(engine: Engine) -> Vec<Method> {
     match engine {
-        Engine::Ic3 => vec![Method::L2s(Sat::Ic3), Method::KLive],
+        // Localization abstraction is for safety rows; liveness runs IC3's methods.
+        Engine::Ic3 | Engine::Cegar => vec![Method::L2s(Sat::Ic3), Method::KLive],
         Engine::Kind => vec![Method::L2s(Sat::Kind)],
         Engine::Bmc => vec![Method::L2s(Sat::Bmc)],
         Engine::Auto | Engine::Explicit => {
