@@ -464,8 +464,8 @@ fn fam_liveness_lassos_replay() {
         ])
         .output()
         .expect("sim runs");
-    let text = String::from_utf8_lossy(&out.stdout).into_owned()
-        + &String::from_utf8_lossy(&out.stderr);
+    let text =
+        String::from_utf8_lossy(&out.stdout).into_owned() + &String::from_utf8_lossy(&out.stderr);
     assert_eq!(out.status.code(), Some(4), "{text}");
     assert!(
         text.contains("`recalibrates_after_failure` violated"),
