@@ -111,7 +111,8 @@ pub const REASON_PROPERTY_LIMIT: &str = "property time limit";
 /// Which engine decided a result, how long it took, and why it is `unknown`.
 #[derive(Clone, Debug, Default)]
 pub struct Meta {
-    /// `explicit`, `bmc`, `kind`, `ic3`, or `auto` when no engine answered.
+    /// `explicit`, `bmc`, `kind`, `ic3`, `klive` (k-liveness), `sim` (the lasso hunt of a
+    /// temporal row), or `auto` when no engine answered.
     pub engine: &'static str,
     /// Seconds spent on this property (`None`: the explicit engine's run time, shared by all).
     pub time_s: Option<f64>,
