@@ -239,13 +239,13 @@ fn run_with(
             }
             out
         }
-        (Engine::Cegar, Some(store)) => {
+        (Engine::Cegar, Some((store, _))) => {
             let given = store.lemmas();
             let (out, _) = crate::sat::with_limits(limits, || {
                 crate::localize::cegar_with_lemmas(&red.aig, limits, &given)
             });
             if let Outcome::Proved(Some(inv)) = &out {
-                store.learn(inv, given.len());
+                store.learn(inv);
             }
             out
         }
