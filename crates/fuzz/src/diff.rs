@@ -197,7 +197,7 @@ pub fn replays(p: &Program, name: &str, kind: PropKind, vectors: &[Vec<i64>]) ->
 fn engine_time(engine: Engine) -> Duration {
     match engine {
         Engine::Kind => Duration::from_secs(2),
-        Engine::Bmc | Engine::Ic3 => Duration::from_secs(20),
+        _ => Duration::from_secs(20),
     }
 }
 
