@@ -230,7 +230,12 @@ fn diff(a: &Args) -> Result<ExitCode, String> {
     }
     println!("models            {}", t.models);
     println!("rejected (E0104)  {}", t.rejected);
+    println!("explicit bounded  {} (verdicts not compared)", t.incomplete);
     println!("verdict pairs     {}", t.verdicts);
+    println!(
+        "engine unknowns   bmc {}, kind {}, ic3 {} (a limit: not compared)",
+        t.unknown[0], t.unknown[1], t.unknown[2]
+    );
     println!("replays           {}", t.replays);
     println!("C traces equal    {} models", t.c_models);
     println!("Rust traces equal {} models", t.rust_models);
@@ -243,10 +248,13 @@ fn diff(a: &Args) -> Result<ExitCode, String> {
     );
     let ph = &t.times;
     println!(
-        "phase seconds     lower {:.1}, explicit {:.1}, sat {:.1}, spin {:.1}, codegen {:.1}, gcc {:.1}, rustc {:.1}, run {:.1}",
+        "phase seconds     lower {:.1}, explicit {:.1}, sat {:.1} (bmc {:.1}, kind {:.1}, ic3 {:.1}), spin {:.1}, codegen {:.1}, gcc {:.1}, rustc {:.1}, run {:.1}",
         ph.lower.as_secs_f64(),
         ph.explicit.as_secs_f64(),
         ph.sat.as_secs_f64(),
+        ph.engines[0].as_secs_f64(),
+        ph.engines[1].as_secs_f64(),
+        ph.engines[2].as_secs_f64(),
         ph.spin.as_secs_f64(),
         ph.codegen.as_secs_f64(),
         ph.gcc.as_secs_f64(),
