@@ -70,7 +70,9 @@ fn an_error_in_a_component_copied_4096_times_is_found_once() {
     let (_, diags) = statecheck_model::check(&file);
     let unknown: Vec<_> = diags
         .iter()
-        .filter(|d| d.is_error() && d.message == "unknown instance `sensro`")
+        .filter(|d| d.is_error() && d.message == "unknown instance `sensro` in component `C0`")
         .collect();
     assert_eq!(unknown.len(), 1, "{diags:?}");
+    // The suggestion comes from the component's own names, as written inside it.
+    assert_eq!(unknown[0].hint.as_deref(), Some("did you mean `sensor`?"));
 }

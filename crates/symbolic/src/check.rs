@@ -4,9 +4,11 @@
 use crate::aig::Aig;
 use crate::blast::{blast, Blasted, SharedProblem};
 use crate::engine::{Invariant, Limits, Outcome, Trace};
+use crate::ic3::Ic3Frames;
 use crate::scorr::{Reduction, SPURIOUS};
 use statecheck_ir::verdict::{self, PropKind, PropResult, Verdict};
 use statecheck_ir::{Machine, Program};
+use std::collections::HashMap;
 use std::sync::{Arc, Mutex, OnceLock};
 use std::time::{Duration, Instant};
 
@@ -19,6 +21,8 @@ pub enum Engine {
     Kind,
     /// IC3/PDR.
     Ic3,
+    /// IC3 on a localization abstraction refined by counterexamples ([`crate::localize`]).
+    Cegar,
 }
 
 impl Engine {
@@ -28,6 +32,7 @@ impl Engine {
             Engine::Bmc => "bmc",
             Engine::Kind => "kind",
             Engine::Ic3 => "ic3",
+            Engine::Cegar => "cegar",
         }
     }
 
@@ -37,6 +42,7 @@ impl Engine {
             Engine::Bmc => crate::bmc::bmc(aig, limits),
             Engine::Kind => crate::kind::kind(aig, limits),
             Engine::Ic3 => crate::ic3::ic3(aig, limits),
+            Engine::Cegar => crate::localize::cegar(aig, limits),
         })
     }
 }
@@ -56,6 +62,9 @@ pub struct Reductions {
     /// Clauses of the invariants IC3 proved on the shared problem's reduction (over its
     /// latches): facts of every reachable state, which later proofs start from.
     lemmas: Mutex<Invariant>,
+    /// Per bad output of the shared problem's reduction: the frames of IC3's last attempt on
+    /// it that a limit stopped, from which its next attempt resumes.
+    ic3_frames: Mutex<HashMap<usize, Ic3Frames>>,
 }
 
 /// The most lemma clauses kept for later proofs (beyond it, new invariants are not added:
@@ -69,6 +78,7 @@ impl Reductions {
             slots: (0..=n).map(|_| Mutex::new(None)).collect(),
             shared: OnceLock::new(),
             lemmas: Mutex::new(Vec::new()),
+            ic3_frames: Mutex::new(HashMap::new()),
         }
     }
 
@@ -97,15 +107,29 @@ impl Reductions {
             .clone()
     }
 
+    /// The frames IC3 left on the shared reduction's bad output `k` (empty if none).
+    fn take_frames(&self, k: usize) -> Ic3Frames {
+        let mut g = self.ic3_frames.lock().unwrap_or_else(|e| e.into_inner());
+        g.remove(&k).unwrap_or_default()
+    }
+
+    /// Keep `frames` for IC3's next attempt on the shared reduction's bad output `k`.
+    fn keep_frames(&self, k: usize, frames: Ic3Frames) {
+        if frames.depth() > 0 {
+            let mut g = self.ic3_frames.lock().unwrap_or_else(|e| e.into_inner());
+            g.insert(k, frames);
+        }
+    }
+
     /// Keep the clauses of `inv` (an invariant proved on the shared reduction, which ends with
-    /// the `given` lemmas it started from) for later proofs.
-    fn learn(&self, inv: &Invariant, given: usize) {
+    /// those of the lemmas it was given that it used) for later proofs: the clauses not yet
+    /// kept, while they fit under [`MAX_LEMMAS`].
+    fn learn(&self, inv: &Invariant) {
         let mut l = self.lemmas.lock().unwrap_or_else(|e| e.into_inner());
-        let new = &inv[..inv.len().saturating_sub(given)];
-        if l.len() + new.len() <= MAX_LEMMAS {
-            let known: std::collections::HashSet<&Vec<(usize, bool)>> = l.iter().collect();
-            let add: Vec<Vec<(usize, bool)>> =
-                new.iter().filter(|c| !known.contains(c)).cloned().collect();
+        let known: std::collections::HashSet<&Vec<(usize, bool)>> = l.iter().collect();
+        let add: Vec<Vec<(usize, bool)>> =
+            inv.iter().filter(|c| !known.contains(c)).cloned().collect();
+        if l.len() + add.len() <= MAX_LEMMAS {
             l.extend(add);
         }
     }
@@ -164,36 +188,64 @@ pub fn run_reduced(
 
 /// [`run_reduced`], with the reduction of `aig` from `reduction`: tried at once when it is
 /// `ready` (computed by an earlier attempt: the quick attempt on the circuit as blasted
-/// would only repeat what that attempt did), and with IC3 on it given the `lemmas` store's
-/// clauses and adding its own invariant to them.
+/// would only repeat what that attempt did), and, with `lemmas` (a store and the shared
+/// problem's bad output `k`), with IC3 on it given the store's clauses and adding its own
+/// invariant to them, and resuming from the frames of its last attempt on `k`.
 fn run_with(
     engine: Engine,
     aig: &Aig,
     limits: &Limits,
     ready: bool,
-    lemmas: Option<&Reductions>,
+    lemmas: Option<(&Reductions, usize)>,
     reduction: impl FnOnce() -> Option<Arc<Reduction>>,
 ) -> Outcome {
     if engine == Engine::Bmc {
         return engine.run(aig, limits);
     }
-    if !ready {
+    // Localization waits for the reduction: on the circuit as blasted a bad output reads
+    // most latches (`crate::localize`), so its quick attempt would be IC3's again.
+    if !ready && engine != Engine::Cegar {
         let quick = engine.run(aig, &limits.attempt_until(Instant::now() + QUICK));
         if !matches!(quick, Outcome::Unknown(_)) || limits.expired().is_some() {
             return quick;
         }
     }
-    let Some(red) = reduction() else {
+    // The reduction is computed once for all properties and attempts (to the run's end, not
+    // this attempt's): the attempt's budget counts from when it is there, or the attempt
+    // that pays for it would end as soon as it starts.
+    let asked = Instant::now();
+    let red = reduction();
+    let waited = asked.elapsed();
+    let limits = &match limits.attempt_deadline {
+        Some(d) if waited > Duration::ZERO => Limits {
+            attempt_deadline: Some(limits.deadline.map_or(d + waited, |r| r.min(d + waited))),
+            ..limits.clone()
+        },
+        _ => limits.clone(),
+    };
+    let Some(red) = red else {
         return engine.run(aig, limits);
     };
     let out = match (engine, lemmas) {
-        (Engine::Ic3, Some(store)) => {
+        (Engine::Ic3, Some((store, k))) => {
             let given = store.lemmas();
+            let mut frames = store.take_frames(k);
             let out = crate::sat::with_limits(limits, || {
-                crate::ic3::ic3_with_lemmas(&red.aig, limits, &given)
+                crate::ic3::ic3_resume(&red.aig, limits, &given, &mut frames)
+            });
+            store.keep_frames(k, frames);
+            if let Outcome::Proved(Some(inv)) = &out {
+                store.learn(inv);
+            }
+            out
+        }
+        (Engine::Cegar, Some((store, _))) => {
+            let given = store.lemmas();
+            let (out, _) = crate::sat::with_limits(limits, || {
+                crate::localize::cegar_with_lemmas(&red.aig, limits, &given)
             });
             if let Outcome::Proved(Some(inv)) = &out {
-                store.learn(inv, given.len());
+                store.learn(inv);
             }
             out
         }
@@ -226,7 +278,7 @@ fn run_property(
     };
     let aig = shared.with_bad(k);
     let ready = reductions.shared_ready();
-    match run_with(engine, &aig, limits, ready, Some(reductions), || {
+    match run_with(engine, &aig, limits, ready, Some((reductions, k)), || {
         reductions.get_shared(bl, k, limits)
     }) {
         Outcome::Proved(Some(inv)) => {

@@ -137,43 +137,107 @@ pub fn ic3(aig: &Aig, limits: &Limits) -> Outcome {
 
 /// [`ic3`], given `lemmas`: clauses over `aig`'s latches that hold in every reachable state
 /// and together are inductive (the invariants of other properties of the same circuit, under
-/// the same constraints). Every frame starts with them, on the current and the next state, so
-/// a proof need not rediscover them; the invariant of a proof includes them.
+/// the same constraints). Every frame starts with those over latches in the cone of influence
+/// (on the current state only: an inductive clause holds on the next state of any state that
+/// satisfies the lemmas, so the next-state copy would only repeat them at the price of the
+/// next-state functions' clauses), so a proof need not rediscover them; the invariant of a
+/// proof includes them.
 pub fn ic3_with_lemmas(aig: &Aig, limits: &Limits, lemmas: &Invariant) -> Outcome {
-    run_ic3(aig, limits, lemmas).0
+    run_ic3(aig, limits, lemmas, &mut Ic3Frames::default()).0
+}
+
+/// [`ic3_with_lemmas`], resumed from the frames `saved` that an earlier attempt on the same
+/// circuit left when a limit stopped it (empty: from the start), and leaving its own there
+/// when a limit stops it in turn (cleared when it decides). Sound because every clause of a
+/// frame `F_i` holds in every state reachable within `i` steps, whatever the attempt that
+/// learned it, and `lemmas` only add facts of every reachable state.
+pub fn ic3_resume(
+    aig: &Aig,
+    limits: &Limits,
+    lemmas: &Invariant,
+    saved: &mut Ic3Frames,
+) -> Outcome {
+    run_ic3(aig, limits, lemmas, saved).0
 }
 
 /// [`ic3`], with what the run did.
 pub fn ic3_with_stats(aig: &Aig, limits: &Limits) -> (Outcome, Ic3Stats) {
-    run_ic3(aig, limits, &Vec::new())
+    run_ic3(aig, limits, &Vec::new(), &mut Ic3Frames::default())
 }
 
-fn run_ic3(aig: &Aig, limits: &Limits, lemmas: &Invariant) -> (Outcome, Ic3Stats) {
+/// The frames of an IC3 attempt that a limit stopped, from which a later attempt on the same
+/// circuit resumes ([`ic3_resume`]).
+#[derive(Clone, Debug, Default)]
+pub struct Ic3Frames {
+    /// `frames[i]`: cubes blocked exactly up to level `i` (at least two levels, or none).
+    frames: Vec<Vec<Cube>>,
+    /// How many learned clauses mention each latch.
+    prio: Vec<u32>,
+    /// The number of latches of the circuit they are about.
+    latches: usize,
+}
+
+impl Ic3Frames {
+    /// How many frames were opened (0: none saved).
+    pub fn depth(&self) -> usize {
+        self.frames.len()
+    }
+}
+
+fn run_ic3(
+    aig: &Aig,
+    limits: &Limits,
+    lemmas: &Invariant,
+    saved: &mut Ic3Frames,
+) -> (Outcome, Ic3Stats) {
     let Some(&bad) = aig.bad.first() else {
         return (Outcome::Proved(Some(Vec::new())), Ic3Stats::default());
     };
     let n = aig.latches.len();
+    let coi = coi_latches(aig);
+    let mut in_coi = vec![false; n];
+    for &j in &coi {
+        in_coi[j] = true;
+    }
+    // Clauses over latches outside the cone of influence say nothing the proof can use.
     let lemmas: Invariant = lemmas
         .iter()
-        .filter(|c| !c.is_empty() && c.iter().all(|&(j, _)| j < n))
+        .filter(|c| !c.is_empty() && c.iter().all(|&(j, _)| j < n && in_coi[j]))
         .cloned()
         .collect();
+    let resumed = saved.latches == n && saved.frames.len() >= 2 && saved.prio.len() == n;
+    let (frames, prio) = if resumed {
+        (
+            std::mem::take(&mut saved.frames),
+            std::mem::take(&mut saved.prio),
+        )
+    } else {
+        (Vec::new(), vec![0; n])
+    };
     let mut m = Ic3 {
         lemmas,
         st: Ic3Stats::default(),
         aig,
         bad,
-        coi: coi_latches(aig),
-        frames: Vec::new(),
+        coi,
+        frames,
         solvers: Vec::new(),
         limits,
         pred: Vec::new(),
         lifter: Frame::new(aig),
-        prio: vec![0; aig.latches.len()],
+        prio,
         ternary: Ternary::new(aig),
     };
-    let r = m.run();
+    let r = if resumed { m.resume() } else { m.run() };
     m.st.frames = m.frames.len();
+    *saved = match &r {
+        Err(_) if m.frames.len() >= 2 => Ic3Frames {
+            frames: std::mem::take(&mut m.frames),
+            prio: std::mem::take(&mut m.prio),
+            latches: n,
+        },
+        _ => Ic3Frames::default(),
+    };
     let outcome = match r {
         Ok(Some(inv)) => Outcome::Proved(Some(inv)),
         Ok(None) => match crate::bmc::bmc(aig, limits) {
@@ -208,11 +272,6 @@ impl<'a> Ic3<'a> {
                 .map(|&(j, v)| latch_lit(self.aig, &mut f, j, v, false))
                 .collect();
             f.s.add(&now);
-            let next: Vec<SLit> = cl
-                .iter()
-                .map(|&(j, v)| latch_lit(self.aig, &mut f, j, v, true))
-                .collect();
-            f.s.add(&next);
         }
         if level == 0 {
             for &j in &self.coi {
@@ -579,6 +638,20 @@ impl<'a> Ic3<'a> {
             return Ok(None);
         }
         self.new_frame();
+        self.frontiers()
+    }
+
+    /// [`Ic3::run`] from saved frames (at least two): one solver per level, built from them.
+    fn resume(&mut self) -> Result<Option<Invariant>, String> {
+        for level in 0..self.frames.len() {
+            let f = self.build_solver(level);
+            self.solvers.push(f);
+        }
+        self.frontiers()
+    }
+
+    /// Block the bad states at each frontier and push clauses, until a frame is inductive.
+    fn frontiers(&mut self) -> Result<Option<Invariant>, String> {
         loop {
             let k = self.frames.len() - 1;
             if self.limits.max_depth.is_some_and(|d| k > d) {
@@ -611,11 +684,21 @@ impl<'a> Ic3<'a> {
             self.new_frame();
             let top = self.frames.len() - 1;
             for i in 1..top {
-                let cubes = std::mem::take(&mut self.frames[i]);
+                let mut cubes = std::mem::take(&mut self.frames[i]).into_iter();
                 let mut stay = Vec::new();
-                for c in cubes {
+                while let Some(c) = cubes.next() {
                     self.st.pushes.0 += 1;
-                    if let Some(core) = self.relative(i, &c, Pred::Unused)? {
+                    let pushed = match self.relative(i, &c, Pred::Unused) {
+                        Ok(p) => p,
+                        Err(why) => {
+                            // Keep this clause and those not yet tried, for a resumed attempt.
+                            stay.push(c);
+                            stay.extend(cubes);
+                            self.frames[i] = stay;
+                            return Err(why);
+                        }
+                    };
+                    if let Some(core) = pushed {
                         self.st.pushes.1 += 1;
                         // The core is inductive relative to `F_i` too (ABC's pushing likewise
                         // shrinks a clause that moves); it subsumes clauses of `F_{i+1}`.
@@ -693,5 +776,66 @@ mod tests {
         // that excludes its bad states (the independent certificate check).
         assert!(inv.ends_with(&lemmas));
         assert!(crate::cert::check(&b, &inv).is_ok());
+    }
+
+    /// A shift register of `n` latches, latch 0 reset true and then false, each next latch
+    /// copying the previous one: by hand, latch `i` holds exactly in tick `i`.
+    fn shift(n: usize, bad: Lit) -> (Aig, Vec<Lit>) {
+        let mut g = Aig::new();
+        let l: Vec<Lit> = (0..n).map(|i| g.latch(Some(i == 0), None)).collect();
+        g.set_next(0, Lit::FALSE);
+        for i in 1..n {
+            g.set_next(i, l[i - 1]);
+        }
+        g.bad = vec![bad];
+        g.bad_names = vec![None];
+        (g, l)
+    }
+
+    #[test]
+    fn a_stopped_attempt_resumes_from_its_frames_to_a_checked_proof() {
+        let (mut g, l) = shift(6, Lit::FALSE);
+        // Latches 1 and 4 never hold together (they hold in ticks 1 and 4 only).
+        g.bad = vec![g.and(l[1], l[4])];
+        let mut saved = Ic3Frames::default();
+        let stopped = Limits {
+            max_depth: Some(1),
+            ..Limits::default()
+        };
+        let out = ic3_resume(&g, &stopped, &Vec::new(), &mut saved);
+        assert!(matches!(out, Outcome::Unknown(_)), "{out:?}");
+        // Frames 0..=2 were open when the depth bound stopped it.
+        assert_eq!(saved.depth(), 3);
+        let Outcome::Proved(Some(inv)) =
+            ic3_resume(&g, &Limits::default(), &Vec::new(), &mut saved)
+        else {
+            panic!("latches 1 and 4 never hold together");
+        };
+        assert!(crate::cert::check(&g, &inv).is_ok());
+        assert_eq!(saved.depth(), 0, "a decided attempt leaves no frames");
+    }
+
+    #[test]
+    fn a_resumed_attempt_still_finds_a_counterexample() {
+        let mut g = shift(6, Lit::FALSE).0;
+        // Latch 5 holds in tick 5: the bad output is reached in the sixth frame.
+        g.bad = vec![Lit::var_lit(g.latches[5].var)];
+        let mut saved = Ic3Frames::default();
+        // Stopped as it opens its second frontier (IC3's obligations may find a trace longer
+        // than its frontier, so a later bound would let it see this one).
+        let stopped = Limits {
+            max_depth: Some(0),
+            ..Limits::default()
+        };
+        let out = ic3_resume(&g, &stopped, &Vec::new(), &mut saved);
+        assert!(matches!(out, Outcome::Unknown(_)), "{out:?}");
+        assert_eq!(saved.depth(), 2, "{out:?}");
+        match ic3_resume(&g, &Limits::default(), &Vec::new(), &mut saved) {
+            Outcome::Reached(t) => {
+                assert_eq!(t.inputs.len(), 6);
+                assert!(crate::scorr::replays(&g, &t));
+            }
+            out => panic!("latch 5 holds in tick 5, got {out:?}"),
+        }
     }
 }

@@ -33,6 +33,9 @@ pub(crate) struct Work<'a> {
     /// Raised when the run ends.
     pub stop: &'a AtomicBool,
     pub reductions: &'a Reductions,
+    /// Whether the engine takes the last pass, open-ended (a share of the time left) after
+    /// the fixed budgets; `false` leaves it to the other engines of a portfolio.
+    pub open_ended: bool,
 }
 
 /// A result that is final for its engine: definitive, or bounded at the depth asked for.
@@ -54,7 +57,9 @@ pub(crate) fn run(
         .filter(|&&b| pt.is_none_or(|pt| b < pt))
         .map(|&b| Some(b))
         .collect();
-    budgets.push(None);
+    if w.open_ended || budgets.is_empty() {
+        budgets.push(None);
+    }
     let name = w.engine.as_str();
     for (pass, budget) in budgets.iter().enumerate() {
         let last = pass + 1 == budgets.len();

@@ -111,6 +111,7 @@ pub(crate) fn run_engine(
             }
         });
         let work = Work {
+            open_ended: true,
             program: p,
             blasted: &bl,
             idx: &idx,

@@ -175,7 +175,5 @@ fn resimulate(
     eval(g, 1, &words, &[], &mut val);
     let word = |l: Lit| val[l.var() as usize] ^ if l.is_neg() { !0 } else { 0 };
     let ok = constraints.iter().fold(!0u64, |m, &c| m & word(c)) | 1;
-    for lane in (0..64).filter(|b| ok >> b & 1 == 1) {
-        classes.refine(|x| word(frame[x as usize]) >> lane & 1 == 1);
-    }
+    classes.refine_lanes(|x| word(frame[x as usize]), ok);
 }
