@@ -1,11 +1,14 @@
 #!/usr/bin/env bash
 # Synthesis benchmarks (docs/synthesis.md, "Benchmarks"): both engines on the fixed examples,
 # then on the philosophers and line families grown until an engine needs LIMIT seconds
-# (default 60); CPU seconds, peak memory and sizes per run, and the reference implementation
-# (reference.py, an independent textbook implementation) beside the explicit engine on the
-# philosophers. Supervisors written with -o are re-read and checked with `verify --plant` up
+# (default 60; the line family up to LINE_MAX = 16 machines, 1.4e12 product states); CPU
+# seconds, peak memory and sizes per run, and the reference implementations (reference.py,
+# an independent textbook implementation in Python, and the simple Rust reference
+# crates/synth/examples/simple_reference.rs) beside the explicit engine on the philosophers,
+# with the ratios of CPU seconds. Supervisors written with -o are re-read and checked with `verify --plant` up
 # to VERIFY_MAX supervisor states (default 100000). Then the (n, k) families TL, DP, CM, AT,
-# BW, TA (docs/synthesis.md, "Benchmark families"), both engines, n grown.
+# BW, TA (docs/synthesis.md, "Benchmark families"), both engines, n grown. Then the issue's
+# bars with --engine auto (SECTIONS=bars).
 # Usage: examples/synthesis/bench.sh [path/to/statecheck]   (default: a release build)
 set -u
 cd "$(dirname "$0")/../.."
@@ -33,8 +36,10 @@ cpu_of() {
     awk "BEGIN { printf \"%.2f\", $u + $s }"
 }
 
-# ratio A B: B / A with two decimals, or "-" when A is 0 (below the clock's resolution).
+# ratio A B: B / A with one decimal; "-" when A is 0 (below the clock's resolution) or B is
+# missing (the peer did not finish).
 ratio() {
+    if [ -z "$2" ]; then printf -- '- (peer did not finish)'; return; fi
     awk "BEGIN { if ($1 > 0) printf \"%.1f\", $2 / $1; else printf \"-\" }"
 }
 
@@ -136,7 +141,7 @@ for family in philosophers line; do
             [ -n "$ref" ] && printf '%-28s %-9s %s\n' "${family}_$n" reference.py "$ref"
             rcpu=$(echo "$ref" | sed -n 's/^reference \([0-9.]*\)s.*/\1/p')
             printf '%-28s %-9s explicit -q is %sx the simple Rust reference, %sx reference.py\n' \
-                "${family}_$n" ratio "$(ratio "$QCPU" "${SCPU:-0}")" "$(ratio "$QCPU" "${rcpu:-0}")"
+                "${family}_$n" ratio "$(ratio "$QCPU" "$SCPU")" "$(ratio "$QCPU" "$rcpu")"
             [ -z "$ref" ] || [ $(( $(date +%s) - t0 )) -ge "$LIMIT" ] && alive_reference=0
         fi
         [ "$family" = line ] && [ "$n" -ge "${LINE_MAX:-16}" ] && break
@@ -185,7 +190,7 @@ for inst in ${BAR_INSTANCES:-tl,7,3 dp,11,2 cm,4,3 at,7,6 bw,10,3 ta,8,3}; do
     if [ -n "$product" ] && awk "BEGIN { exit !($product <= $SIMPLE_MAX) }"; then
         simple "${family}($n,$k)" "$f"
         printf '%-28s %-9s auto -q is %sx the simple Rust reference\n' "${family}($n,$k)" ratio \
-            "$(ratio "$QCPU" "${SCPU:-0}")"
+            "$(ratio "$QCPU" "$SCPU")"
     fi
 done
 echo "== bar: the line family at 10^12 product states in under 60 s"

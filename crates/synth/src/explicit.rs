@@ -268,6 +268,10 @@ impl Iterator for EventBits<'_> {
     }
 }
 
+/// Sweeps over all states before the search for the states reachable through kept ones
+/// takes over (see [`run`]).
+const SWEEPS: usize = 3;
+
 /// Run the explicit engine within `budget`.
 pub fn run(p: &Problem, budget: &Budget) -> Result<Explicit, Error> {
     let pk = Packing::new(p);
@@ -382,6 +386,7 @@ pub fn run(p: &Problem, budget: &Budget) -> Result<Explicit, Error> {
     check(budget, "fixpoint", n, &store, &succ, &visited)?;
     drop(visited);
     let preds = |t: usize| &pred[pred_off[t] as usize..pred_off[t + 1] as usize];
+    let succs = |s: usize| &succ[succ_off[s] as usize..succ_off[s + 1] as usize];
     let mut alive: Vec<bool> = bad.iter().map(|b| !b).collect();
     let mut work: Vec<u32> = (0..n as u32).filter(|&s| bad[s as usize]).collect();
     let mut rounds = 0;
@@ -399,6 +404,8 @@ pub fn run(p: &Problem, budget: &Budget) -> Result<Explicit, Error> {
             }
         }
         // Nonblocking: keep only states that reach a marked state through kept states.
+        // (Sweeps in state order, as for reachability below, do not settle here: on the
+        // philosophers a path back to the marked initial state first goes deeper.)
         coreach.fill(false);
         stack.clear();
         for s in 0..n {
@@ -426,14 +433,32 @@ pub fn run(p: &Problem, budget: &Budget) -> Result<Explicit, Error> {
             break;
         }
     }
-    // Restrict to what is reachable from the initial state through kept states.
+    // Restrict to what is reachable from the initial state through kept states: sweeps in
+    // state order (exploration order, so a state's first predecessor comes before it), then
+    // a search from the states the last sweep found, if they have not settled.
     let mut kept = vec![false; n];
     if alive[0] {
         kept[0] = true;
         stack.clear();
         stack.push(0);
+        for _ in 0..SWEEPS {
+            stack.clear();
+            for s in 0..n {
+                if kept[s] {
+                    for &(_, t) in succs(s) {
+                        if alive[t as usize] && !kept[t as usize] {
+                            kept[t as usize] = true;
+                            stack.push(t);
+                        }
+                    }
+                }
+            }
+            if stack.is_empty() {
+                break;
+            }
+        }
         while let Some(s) = stack.pop() {
-            for &(_, t) in &succ[succ_off[s as usize] as usize..succ_off[s as usize + 1] as usize] {
+            for &(_, t) in succs(s as usize) {
                 if alive[t as usize] && !kept[t as usize] {
                     kept[t as usize] = true;
                     stack.push(t);
