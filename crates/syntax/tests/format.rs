@@ -51,3 +51,36 @@ fn random_texts_format_idempotently_and_keep_their_tree_and_comments() {
     let (n, _) = format_common::fuzz(0..400);
     assert_eq!(n, 400);
 }
+
+/// Temporal formulas whose operands are chains of the same operator or looser operators
+/// under tighter ones. The parser reads a parenthesised group without temporal operators as
+/// one atom, so a needless pair of parentheses changes the tree: `a && b && G c` is
+/// `And(And(a, b), G c)`, and `(a && b) && G c` would be `And(atom a && b, G c)` (found by the
+/// `fmt` fuzz target on a mutated `fam_live4.sc`). Each text below is its own canonical form.
+#[test]
+fn temporal_formulas_keep_their_grouping() {
+    let formulas = [
+        "a && b && G c",
+        "a || b || F c",
+        "a && b || c && G d",
+        "(a || G b) && c",
+        "a || b => G c",
+        "(a => G b) => c",
+        "G a => F b => c",
+        "a U b U c",
+        "(a U b) U c",
+        "a && b U c",
+        "A[a && b || c U d && e]",
+        "A[(a U b) && c U d]",
+        "!(a U b) && c",
+        "F G (a && b) => G (c => F !d)",
+    ];
+    for f in formulas {
+        let src = format!("system S {{\n  ltl p: {f};\n}}\n");
+        let once = check_preserved(f, &src);
+        assert!(
+            once.contains(&format!("ltl p: {f};")),
+            "{f}: printed as\n{once}"
+        );
+    }
+}

@@ -431,10 +431,31 @@ impl Printer<'_> {
         }
     }
 
-    /// A temporal formula, parenthesised wherever the parser's grouping needs it: an atom
-    /// whose expression is an `&&`/`||` (the parser reads a parenthesised group without
-    /// temporal operators as one atom), and every compound operand.
+    /// A temporal formula, parenthesised exactly where the parser's grouping needs it
+    /// (`parser/temporal.rs`: `=>` loosest and right-associative, then `||` and `&&`
+    /// left-associative, `U R W` right-associative, prefix operators tightest), so the text
+    /// parses back to the same tree. Needless parentheses would change it: the parser reads a
+    /// parenthesised group without temporal operators as one atom, so `a && b && G c` printed
+    /// as `(a && b) && G c` would come back with the atom `a && b`.
     fn formula(&self, f: &Formula) -> String {
+        self.formula_at(f, 1, false)
+    }
+
+    /// `f` where the parser reads an operand of binding level `ctx` (1 `=>`, 2 `||`, 3 `&&`,
+    /// 4 `U R W`, 5 prefix), in parentheses when it binds more loosely. `in_quant` is the left
+    /// operand of `A[.. U ..]`, read without infix `U R W`, which must be parenthesised there.
+    fn formula_at(&self, f: &Formula, ctx: u8, in_quant: bool) -> String {
+        let level = match f {
+            Formula::Implies(..) => 1,
+            Formula::Or(..) => 2,
+            Formula::And(..) => 3,
+            Formula::Binary(..) if in_quant => 0,
+            Formula::Binary(..) => 4,
+            Formula::Atom(_) | Formula::Not(..) | Formula::Unary(..) | Formula::QuantUntil(..) => 5,
+        };
+        if level < ctx {
+            return format!("({})", self.formula_at(f, 1, false));
+        }
         match f {
             Formula::Atom(e) => {
                 let text = self.expr(e);
@@ -444,32 +465,44 @@ impl Printer<'_> {
                     text
                 }
             }
-            Formula::Not(a, _) => format!("!{}", self.operand(a)),
-            Formula::And(a, b, _) => format!("{} && {}", self.operand(a), self.operand(b)),
-            Formula::Or(a, b, _) => format!("{} || {}", self.operand(a), self.operand(b)),
-            Formula::Implies(a, b, _) => format!("{} => {}", self.operand(a), self.formula(b)),
-            Formula::Unary(op, a, _) => format!("{} {}", op.as_str(), self.operand(a)),
-            Formula::Binary(op, a, b, _) => {
-                format!("{} {} {}", self.operand(a), op.as_str(), self.operand(b))
+            Formula::Not(a, _) => format!("!{}", self.formula_at(a, 5, in_quant)),
+            Formula::And(a, b, _) => format!(
+                "{} && {}",
+                self.formula_at(a, 3, in_quant),
+                self.formula_at(b, 4, in_quant)
+            ),
+            Formula::Or(a, b, _) => format!(
+                "{} || {}",
+                self.formula_at(a, 2, in_quant),
+                self.formula_at(b, 3, in_quant)
+            ),
+            Formula::Implies(a, b, _) => {
+                format!(
+                    "{} => {}",
+                    self.formula_at(a, 2, false),
+                    self.formula_at(b, 1, false)
+                )
             }
+            Formula::Unary(op, a, _) => {
+                format!("{} {}", op.as_str(), self.formula_at(a, 5, in_quant))
+            }
+            Formula::Binary(op, a, b, _) => format!(
+                "{} {} {}",
+                self.formula_at(a, 5, false),
+                op.as_str(),
+                self.formula_at(b, 4, false)
+            ),
             Formula::QuantUntil(q, a, b, _) => {
                 let q = match q {
                     Quant::All => "A",
                     Quant::Exists => "E",
                 };
-                format!("{q}[{} U {}]", self.formula(a), self.formula(b))
+                format!(
+                    "{q}[{} U {}]",
+                    self.formula_at(a, 2, true),
+                    self.formula_at(b, 2, false)
+                )
             }
-        }
-    }
-
-    /// A formula in operand position: atoms, prefix operators and quantified untils as they
-    /// are, anything else in parentheses.
-    fn operand(&self, f: &Formula) -> String {
-        match f {
-            Formula::Atom(_) | Formula::Not(..) | Formula::Unary(..) | Formula::QuantUntil(..) => {
-                self.formula(f)
-            }
-            _ => format!("({})", self.formula(f)),
         }
     }
 }
