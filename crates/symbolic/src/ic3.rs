@@ -89,6 +89,9 @@ struct Ic3<'a> {
     st: Ic3Stats,
     /// Clauses known to hold in every reachable state (given by the caller), in every frame.
     lemmas: Invariant,
+    /// Every lemma given (over `aig`'s latches): a union of inductive invariants, so inductive
+    /// itself, unlike `lemmas` (those in the cone), and the invariant of a proof ends with it.
+    given: Invariant,
     aig: &'a Aig,
     bad: Lit,
     coi: Vec<usize>,
@@ -199,10 +202,15 @@ fn run_ic3(
     for &j in &coi {
         in_coi[j] = true;
     }
-    // Clauses over latches outside the cone of influence say nothing the proof can use.
-    let lemmas: Invariant = lemmas
+    let given: Invariant = lemmas
         .iter()
-        .filter(|c| !c.is_empty() && c.iter().all(|&(j, _)| j < n && in_coi[j]))
+        .filter(|c| !c.is_empty() && c.iter().all(|&(j, _)| j < n))
+        .cloned()
+        .collect();
+    // Clauses over latches outside the cone of influence say nothing the proof can use.
+    let lemmas: Invariant = given
+        .iter()
+        .filter(|c| c.iter().all(|&(j, _)| in_coi[j]))
         .cloned()
         .collect();
     let resumed = saved.latches == n && saved.frames.len() >= 2 && saved.prio.len() == n;
@@ -216,6 +224,7 @@ fn run_ic3(
     };
     let mut m = Ic3 {
         lemmas,
+        given,
         st: Ic3Stats::default(),
         aig,
         bad,
@@ -712,14 +721,17 @@ impl<'a> Ic3<'a> {
                 }
                 self.frames[i] = stay;
                 if self.frames[i].is_empty() {
-                    // The frames' clauses are inductive relative to the lemmas, which are
-                    // inductive themselves: together they are the invariant (lemmas last).
+                    // The frames' clauses are inductive relative to the lemmas in the cone;
+                    // with every lemma given (a union of inductive invariants, so inductive
+                    // itself) they are an inductive invariant (the lemmas last). The frames
+                    // alone with the lemmas in the cone need not be: a lemma may rely on one
+                    // outside it.
                     let mut inv: Invariant = self.frames[i + 1..]
                         .iter()
                         .flatten()
                         .map(|c| c.iter().map(|&(j, v)| (j, !v)).collect())
                         .collect();
-                    inv.extend(self.lemmas.iter().cloned());
+                    inv.extend(self.given.iter().cloned());
                     return Ok(Some(inv));
                 }
             }
