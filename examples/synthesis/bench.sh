@@ -17,12 +17,48 @@ if [ -z "$BIN" ]; then
     BIN=${CARGO_TARGET_DIR:-target}/release/statecheck
 fi
 # The instance generator (crates/synth/examples/gen_families.rs).
-cargo build --release -q -p statecheck-synth --example gen_families || exit 2
+cargo build --release -q -p statecheck-synth --example gen_families --example simple_reference || exit 2
 GEN=${CARGO_TARGET_DIR:-target}/release/examples/gen_families
+# The simple reference implementation in Rust (crates/synth/examples/simple_reference.rs).
+SIMPLE=${CARGO_TARGET_DIR:-target}/release/examples/simple_reference
 TMP=$(mktemp -d)
 trap 'rm -rf "$TMP"' EXIT
 TIME=/usr/bin/time
 [ -x "$TIME" ] || TIME=
+
+# cpu_of FILE: user + system seconds of a time(1) -f "%U %S %M" file (last line).
+cpu_of() {
+    local u s m
+    read -r u s m < <(tail -1 "$1")
+    awk "BEGIN { printf \"%.2f\", $u + $s }"
+}
+
+# ratio A B: B / A with two decimals, or "-" when A is 0 (below the clock's resolution).
+ratio() {
+    awk "BEGIN { if ($1 > 0) printf \"%.1f\", $2 / $1; else printf \"-\" }"
+}
+
+# quiet LABEL ENGINE FILE: `synth -q` (no guards, no file); prints one line and leaves the CPU
+# seconds in $QCPU; returns 1 when the run hit the limit.
+quiet() {
+    $TIME -f "%U %S %M" -o "$TMP/t" "$BIN" synth -q --engine "$2" --timeout "$LIMIT" "$3" >"$TMP/o" 2>&1
+    local m
+    m=$(tail -1 "$TMP/t" | cut -d' ' -f3)
+    QCPU=$(cpu_of "$TMP/t")
+    QLINE=$(tail -1 "$TMP/o")
+    printf '%-28s %-9s cpu %7ss %6s MB  %s\n' "$1" "$2 -q" "$QCPU" $((m / 1024)) "$QLINE"
+    case $QLINE in unknown:*) return 1 ;; esac
+    return 0
+}
+
+# simple LABEL FILE: the simple Rust reference (crates/synth/examples/simple_reference.rs),
+# CPU seconds of its synthesis in $SCPU ("" when it did not finish within LIMIT).
+simple() {
+    local r
+    r=$(timeout "$LIMIT" "$SIMPLE" "$2" 2>&1)
+    SCPU=$(echo "$r" | sed -n 's/^simple-ref \([0-9.]*\)s.*/\1/p')
+    printf '%-28s %-9s %s\n' "$1" simple-ref "${r:-did not finish in ${LIMIT} s}"
+}
 
 # run LABEL ENGINE FILE [SYSTEM]: prints one line; returns 1 when the run hit the limit.
 run() {
@@ -58,8 +94,10 @@ run() {
     return 0
 }
 
-# SECTIONS: which parts to run (default all): fixed, grown (philosophers and line), families.
-SECTIONS=${SECTIONS:-fixed grown families}
+# SECTIONS: which parts to run (default all): fixed, grown (philosophers and line), families,
+# bars (the issue's bars: auto on one instance of >= 10^6 states per family, line_16, symbolic
+# under 10^5 states).
+SECTIONS=${SECTIONS:-fixed grown families bars}
 echo "load average: $(cut -d' ' -f1-3 /proc/loadavg 2>/dev/null)"
 
 if [[ " $SECTIONS " == *" fixed "* ]]; then
@@ -88,19 +126,20 @@ for family in philosophers line; do
             [ "${!var}" = 1 ] || continue
             run "${family}_$n" "$engine" "$f" || eval "$var=0"
         done
-        if [ "$family" = philosophers ] && [ $alive_reference = 1 ]; then
-            # The explicit engine as the reference runs: no guards, no output file.
-            if [ -n "$TIME" ]; then
-                $TIME -f "%U %S %M" -o "$TMP/t" "$BIN" synth -q --engine explicit --timeout "$LIMIT" "$f" >"$TMP/o" 2>&1
-                read -r u s m < <(tail -1 "$TMP/t")
-                printf '%-28s %-9s cpu %7ss %6s MB  %s\n' "${family}_$n" "expl. -q" \
-                    "$(awk "BEGIN { printf \"%.2f\", $u + $s }")" $((m / 1024)) "$(tail -1 "$TMP/o")"
-            fi
+        if [ "$family" = philosophers ] && [ $alive_reference = 1 ] && [ -n "$TIME" ]; then
+            # The explicit engine as the references run (no guards, no output file), the
+            # simple Rust reference and reference.py; ratios of CPU seconds in this run.
+            quiet "${family}_$n" explicit "$f"
+            simple "${family}_$n" "$f"
             t0=$(date +%s)
             ref=$(timeout "$LIMIT" python3 examples/synthesis/reference.py "$family" "$n")
-            [ -n "$ref" ] && printf '%-28s %-9s %s\n' "${family}_$n" reference "$ref"
+            [ -n "$ref" ] && printf '%-28s %-9s %s\n' "${family}_$n" reference.py "$ref"
+            rcpu=$(echo "$ref" | sed -n 's/^reference \([0-9.]*\)s.*/\1/p')
+            printf '%-28s %-9s explicit -q is %sx the simple Rust reference, %sx reference.py\n' \
+                "${family}_$n" ratio "$(ratio "$QCPU" "${SCPU:-0}")" "$(ratio "$QCPU" "${rcpu:-0}")"
             [ -z "$ref" ] || [ $(( $(date +%s) - t0 )) -ge "$LIMIT" ] && alive_reference=0
         fi
+        [ "$family" = line ] && [ "$n" -ge "${LINE_MAX:-16}" ] && break
         n=$((n + 1))
     done
 done
@@ -127,4 +166,51 @@ for fk in "tl ${K_TL:-3}" "dp ${K_DP:-2}" "cm ${K_CM:-2}" "at ${K_AT:-3}" "bw ${
         n=$((n + 1))
     done
 done
+fi
+
+# The issue's bars (docs/synthesis.md, "Benchmarks"), with `synth -q --engine auto`: one
+# instance of at least 10^6 reachable states per family (BAR_INSTANCES overrides), each beside
+# the simple Rust reference when its product is at most SIMPLE_MAX reachable states; the
+# line family at 10^12 product states; and the largest symbolic CPU time over the family
+# instances under 10^5 reachable states (n grown from 2 per family, k as above).
+if [[ " $SECTIONS " == *" bars "* ]] && [ -n "$TIME" ]; then
+SIMPLE_MAX=${SIMPLE_MAX:-3000000}
+echo "== bar: every family an instance of >= 10^6 reachable states in under 30 s (auto)"
+for inst in ${BAR_INSTANCES:-tl,7,3 dp,11,2 cm,4,3 at,7,6 bw,10,3 ta,8,3}; do
+    IFS=, read -r family n k <<<"$inst"
+    f=$TMP/${family}_${n}_$k.sc
+    "$GEN" "$family" "$n" "$k" "$f" || continue
+    quiet "${family}($n,$k)" auto "$f"
+    product=$(echo "$QLINE" | sed -n 's/.*product \([0-9.e+]*\) .*/\1/p')
+    if [ -n "$product" ] && awk "BEGIN { exit !($product <= $SIMPLE_MAX) }"; then
+        simple "${family}($n,$k)" "$f"
+        printf '%-28s %-9s auto -q is %sx the simple Rust reference\n' "${family}($n,$k)" ratio \
+            "$(ratio "$QCPU" "${SCPU:-0}")"
+    fi
+done
+echo "== bar: the line family at 10^12 product states in under 60 s"
+"$GEN" line 16 "$TMP/line_16.sc"
+for engine in auto symbolic; do quiet line_16 "$engine" "$TMP/line_16.sc"; done
+echo "== bar: no instance under 10^5 reachable states takes the symbolic engine more than 2 s"
+worst=0 worst_at=-
+for fk in "tl ${K_TL:-3}" "dp ${K_DP:-2}" "cm ${K_CM:-2}" "at ${K_AT:-3}" "bw ${K_BW:-3}" "ta ${K_TA:-3}" \
+          "line 0" "philosophers 0"; do
+    set -- $fk
+    family=$1 k=$2 n=2
+    while [ "$n" -le 40 ]; do
+        f=$TMP/small.sc
+        if [ "$k" = 0 ]; then "$GEN" "$family" "$n" "$f"; else "$GEN" "$family" "$n" "$k" "$f"; fi || break
+        # The explicit engine's count of reachable states decides (fast below 10^5).
+        "$BIN" synth -q --engine explicit --max-states 100000 "$f" >"$TMP/o" 2>&1
+        product=$(sed -n 's/.*product \([0-9.e+]*\) .*/\1/p' "$TMP/o")
+        [ -n "$product" ] && awk "BEGIN { exit !($product < 100000) }" || break
+        $TIME -f "%U %S %M" -o "$TMP/t" "$BIN" synth -q --engine symbolic --timeout "$LIMIT" "$f" >"$TMP/o" 2>&1
+        c=$(cpu_of "$TMP/t")
+        label="$family($n,$k)"
+        [ "$k" = 0 ] && label="${family}_$n"
+        if awk "BEGIN { exit !($c > $worst) }"; then worst=$c worst_at="$label, product $product"; fi
+        n=$((n + 1))
+    done
+done
+echo "largest symbolic -q CPU time under 10^5 reachable states: ${worst} s ($worst_at)"
 fi

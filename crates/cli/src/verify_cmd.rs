@@ -210,8 +210,13 @@ pub fn run(a: VerifyArgs) -> Result<u8> {
         let (aig, name) = symbolic::model_problem(&program, &a.properties)?;
         return symbolic::check_certificate(&aig, &name, cf);
     }
-    if a.certificate.is_some() && a.engine != symbolic::EngineArg::Ic3 {
-        bail!("--certificate needs --engine ic3");
+    if a.certificate.is_some()
+        && !matches!(
+            a.engine,
+            symbolic::EngineArg::Ic3 | symbolic::EngineArg::Cegar
+        )
+    {
+        bail!("--certificate needs --engine ic3 or cegar");
     }
     let mut opts = options(&a, max_memory, remaining(timeout, started));
     if a.symmetry && !a.no_symmetry {

@@ -451,6 +451,26 @@ fn fam_liveness_lassos_replay() {
         assert_eq!(code, Some(4), "{s}: {text}");
         assert!(text.contains(&format!("`{prop}` violated")), "{s}: {text}");
     }
+    // Master + 2 FAMs: a lasso the hunt found (the scenario's comment explains it), replayed.
+    let out = Command::new(BIN)
+        .args([
+            "sim",
+            &format!("{root}/examples/fam/liveness/fam_live2.sc"),
+            "--system",
+            "FamLive2",
+            "--quiet",
+            "--scenario",
+            &scn("calibration_never_ends2"),
+        ])
+        .output()
+        .expect("sim runs");
+    let text = String::from_utf8_lossy(&out.stdout).into_owned()
+        + &String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(4), "{text}");
+    assert!(
+        text.contains("`recalibrates_after_failure` violated"),
+        "{text}"
+    );
     let dir = std::env::temp_dir().join(format!("statecheck-famlasso-{}", std::process::id()));
     std::fs::create_dir_all(dir.join("liveness")).expect("dir");
     // The copy imports the closed loop (and through it examples/fam/lib/) where it is.

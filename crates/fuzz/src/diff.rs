@@ -48,10 +48,48 @@ pub struct Report {
     pub failures: Vec<String>,
     /// Compile failures (gcc, rustc, spin), each with the model text.
     pub compile_failures: Vec<String>,
+    /// Where the time went (wall time of each phase, summed over models and batches).
+    pub times: Times,
+}
+
+/// Wall time per phase of a differential run (the figures of `statecheck-fuzz diff`, to see
+/// where a model's cost goes).
+#[derive(Clone, Debug, Default)]
+pub struct Times {
+    /// Generating, parsing, checking and lowering the models.
+    pub lower: Duration,
+    /// The explicit engine and the replays of its counterexamples.
+    pub explicit: Duration,
+    /// BMC, k-induction and IC3 and the replays of their counterexamples.
+    pub sat: Duration,
+    /// Exporting Promela and `spin -a`.
+    pub spin: Duration,
+    /// Generating C and Rust and the interpreter's expected traces.
+    pub codegen: Duration,
+    /// `gcc` on the batch's C program.
+    pub gcc: Duration,
+    /// `rustc` on the batch's Rust program.
+    pub rustc: Duration,
+    /// Running the compiled drivers and comparing their traces.
+    pub run: Duration,
+}
+
+impl Times {
+    fn add(&mut self, o: &Times) {
+        self.lower += o.lower;
+        self.explicit += o.explicit;
+        self.sat += o.sat;
+        self.spin += o.spin;
+        self.codegen += o.codegen;
+        self.gcc += o.gcc;
+        self.rustc += o.rustc;
+        self.run += o.run;
+    }
 }
 
 impl Report {
-    fn add(&mut self, o: Report) {
+    /// Add `o`'s figures to these.
+    pub fn add(&mut self, o: Report) {
         self.models += o.models;
         self.rejected += o.rejected;
         self.verdicts += o.verdicts;
@@ -61,6 +99,7 @@ impl Report {
         self.spin_ok += o.spin_ok;
         self.failures.extend(o.failures);
         self.compile_failures.extend(o.compile_failures);
+        self.times.add(&o.times);
     }
 }
 
@@ -137,6 +176,11 @@ pub fn replays(p: &Program, name: &str, kind: PropKind, vectors: &[Vec<i64>]) ->
 
 /// Check one lowered model's verdicts: explicit against BMC, k-induction and IC3.
 fn verdicts(p: &Program, text: &str, rep: &mut Report) {
+    let began = Instant::now();
+    verdicts_inner(p, text, rep, began);
+}
+
+fn verdicts_inner(p: &Program, text: &str, rep: &mut Report, began: Instant) {
     let opts = Options {
         threads: 1,
         max_states: Some(MAX_STATES),
@@ -169,9 +213,17 @@ fn verdicts(p: &Program, text: &str, rep: &mut Report) {
             }
         }
     }
+    let sat_began = Instant::now();
+    rep.times.explicit += sat_began - began;
     if !ex.stats.complete && !ex.stats.all_decided {
         return;
     }
+    sat_verdicts(p, text, &ex, rep);
+    rep.times.sat += sat_began.elapsed();
+}
+
+/// BMC's, k-induction's and IC3's verdicts against the explicit engine's `ex`.
+fn sat_verdicts(p: &Program, text: &str, ex: &statecheck_explicit::Report, rep: &mut Report) {
     let Ok((bl, idx)) = problems(p, &[]) else {
         rep.failures
             .push(format!("problems() refused the properties\n{text}"));
@@ -427,6 +479,13 @@ fn model_of_line(cases: &[Case], line: &str) -> String {
 /// if `rust`, one Rust program, in `dir`, run both and compare their traces with the
 /// interpreter's line for line; what differs or does not compile goes to `rep`.
 pub fn codegen_batch(cases: &[Case], dir: &Path, rust: bool, rep: &mut Report) {
+    let mut clock = Instant::now();
+    let mut lap = || {
+        let now = Instant::now();
+        let d = now - clock;
+        clock = now;
+        d
+    };
     let src = Source::new("random.sc", "");
     let mut want = String::new();
     let (mut c_main, mut rs_main) = (
@@ -458,6 +517,7 @@ pub fn codegen_batch(cases: &[Case], dir: &Path, rust: bool, rep: &mut Report) {
     c_main.push_str("    return 0;\n}\n");
     rs_main.push_str("    let _ = std::io::stdout().write_all(out.as_bytes());\n}\n");
     let _ = std::fs::write(dir.join("driver.c"), c_main);
+    rep.times.codegen += lap();
     let mut langs = Vec::new();
     let cc = Command::new("gcc")
         .args([
@@ -491,6 +551,7 @@ pub fn codegen_batch(cases: &[Case], dir: &Path, rust: bool, rep: &mut Report) {
         }
         Err(e) => rep.compile_failures.push(format!("gcc does not run: {e}")),
     }
+    rep.times.gcc += lap();
     if rust {
         let _ = std::fs::write(dir.join("main.rs"), rs_main);
         let rustc = std::env::var("RUSTC").unwrap_or_else(|_| "rustc".into());
@@ -521,6 +582,7 @@ pub fn codegen_batch(cases: &[Case], dir: &Path, rust: bool, rep: &mut Report) {
                 .push(format!("rustc does not run: {e}")),
         }
     }
+    rep.times.rustc += lap();
     for (exe, lang) in langs {
         let Ok(out) = Command::new(dir.join(exe)).output() else {
             rep.failures.push(format!("{lang} driver does not run"));
@@ -538,6 +600,7 @@ pub fn codegen_batch(cases: &[Case], dir: &Path, rust: bool, rep: &mut Report) {
             rep.rust_models += cases.len() as u64;
         }
     }
+    rep.times.run += lap();
 }
 
 /// One batch: models `first .. first + n` of `seed`'s sequence.
@@ -548,10 +611,13 @@ pub fn batch(seed: u64, first: u64, n: u64, rust: bool, spin: bool, dir: &Path) 
     for m in first..first + n {
         let model_seed = seed.wrapping_mul(1_000_003).wrapping_add(m);
         rep.models += 1;
+        let began = Instant::now();
         let text = Gen::new(model_seed).model_with(true);
         let caught = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
             let mut r = Report::default();
-            let p = match lower(&text) {
+            let lowered = lower(&text);
+            r.times.lower += began.elapsed();
+            let p = match lowered {
                 Ok(p) => p,
                 Err(e) => {
                     r.rejected += 1;
@@ -563,10 +629,12 @@ pub fn batch(seed: u64, first: u64, n: u64, rust: bool, spin: bool, dir: &Path) 
             };
             verdicts(&p, &text, &mut r);
             if spin {
+                let began = Instant::now();
                 match spin_accepts(&p, dir, m as usize) {
                     Ok(()) => r.spin_ok += 1,
                     Err(e) => r.compile_failures.push(format!("spin -a: {e}\n{text}")),
                 }
+                r.times.spin += began.elapsed();
             }
             let case = Case::random(text.clone(), p, model_seed ^ 0xA5A5_0000, RUNS, TICKS);
             (r, Some(case))

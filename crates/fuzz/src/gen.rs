@@ -6,8 +6,10 @@
 //! expressions, fixed differently per instance) and time units (`tick 100 ms;`, `after(200
 //! ms)`, `within 300 ms`). Optionally two instances connected in a system, an interleaved
 //! system, a composite component (ports, parameters, nesting, instance arrays) and a hybrid
-//! plant (`continuous`, `grid`, `sensor`, `der`, `profile`), see [`extra`]. Not generated:
-//! imports (file-level). Also the generator of the codegen crate's differential test.
+//! plant (`continuous`, `grid`, `sensor`, `der`, `profile`), see [`extra`], and arrays of
+//! variables (`input r[2]`, `output g[2]`) read and written by constant index and in `for j
+//! in 0..2` loops, connected element by element (`[*]`) between two instances. Not
+//! generated: imports (file-level), interfaces with slots. Also the generator of the codegen crate's differential test.
 
 mod extra;
 
@@ -28,6 +30,11 @@ pub struct Gen {
     in_props: bool,
     /// The model declares `tick 100 ms;` and writes delays and bounds in milliseconds.
     time_units: bool,
+    /// The chart has the arrays `input r[2]` and `output g[2]` (constant indices, `for`
+    /// loops, and `[*]` connections between two instances).
+    arrays: bool,
+    /// A `for j in 0..2` loop's body is being written (`j`, `r[j]`, `g[j]` are leaves).
+    in_loop: bool,
 }
 
 impl Gen {
@@ -41,6 +48,8 @@ impl Gen {
             param: false,
             in_props: false,
             time_units: false,
+            arrays: false,
+            in_loop: false,
         }
     }
 
@@ -55,6 +64,12 @@ impl Gen {
     fn int_leaf(&mut self) -> String {
         if self.param && !self.in_props && self.chance(12) {
             return "k".into();
+        }
+        if self.arrays && self.chance(15) {
+            if self.in_loop && self.chance(60) {
+                return ["j", "r[j]", "g[j]"][self.pick(3)].into();
+            }
+            return format!("{}[{}]", ["r", "g"][self.pick(2)], self.pick(2));
         }
         match self.pick(6) {
             0 => "x".into(),
@@ -130,6 +145,12 @@ impl Gen {
     fn stmts(&mut self, n: usize) -> String {
         let mut out = String::new();
         for _ in 0..n {
+            if self.arrays && !self.in_loop && self.chance(25) {
+                let s = self.array_stmt();
+                out.push_str(&s);
+                out.push(' ');
+                continue;
+            }
             let s = match self.pick(8) {
                 0 | 1 => format!("x = {};", self.int_expr(2)),
                 2 => format!("y = {};", self.int_expr(2)),
@@ -148,6 +169,30 @@ impl Gen {
             out.push(' ');
         }
         out
+    }
+
+    /// A statement on the arrays: a `for` loop over both elements or an element by a
+    /// constant index (values may leave `int[0..3]`: a run-time error).
+    fn array_stmt(&mut self) -> String {
+        if self.chance(60) {
+            self.in_loop = true;
+            let e = self.int_expr(1);
+            let extra = if self.chance(40) {
+                format!(" x += {};", self.int_leaf())
+            } else {
+                String::new()
+            };
+            self.in_loop = false;
+            format!("for j in 0..2 {{ g[j] = {e};{extra} }}")
+        } else {
+            let i = self.pick(2);
+            let e = self.int_expr(1);
+            if self.chance(30) {
+                format!("g[{i}] += {e};")
+            } else {
+                format!("g[{i}] = {e};")
+            }
+        }
     }
 
     fn trigger(&mut self) -> String {
@@ -272,7 +317,7 @@ impl Gen {
             let mut o = String::new();
             let mut word = String::new();
             let flush = |w: &mut String, o: &mut String| {
-                if ["x", "y", "a", "b", "c", "f", "e0"].contains(&w.as_str()) {
+                if ["x", "y", "a", "b", "c", "f", "e0", "r", "g"].contains(&w.as_str()) {
                     o.push_str(p);
                 }
                 o.push_str(w);
@@ -368,6 +413,7 @@ impl Gen {
             composite = self.chance(20);
             plant = self.chance(15);
             interleaved = self.chance(15);
+            self.arrays = self.chance(25);
             // A continuous variable's rates are per second: its model declares the tick.
             self.time_units |= plant;
         }
@@ -390,8 +436,13 @@ impl Gen {
         } else {
             ""
         };
+        let arrays = if self.arrays {
+            "input r[2]: int[0..3] = 0;\n  output g[2]: int[0..3] = 0;\n  "
+        } else {
+            ""
+        };
         let mut text = format!(
-            "{tick}chart C{decl} {{\n  input event e0;\n  input event e1;\n  input a: int[-4..4] = 0;\n  input b: bool = false;\n  input c: int[-2..3] = 1;\n  output x: int[-20..20] = 0;\n  output y: int[0..7] = 0;\n  local f: bool = false;\n  local event le;\n  output event oe;\n  {body}\n}}\n"
+            "{tick}chart C{decl} {{\n  input event e0;\n  input event e1;\n  input a: int[-4..4] = 0;\n  input b: bool = false;\n  input c: int[-2..3] = 1;\n  {arrays}output x: int[-20..20] = 0;\n  output y: int[0..7] = 0;\n  local f: bool = false;\n  local event le;\n  output event oe;\n  {body}\n}}\n"
         );
         if !two && !props {
             return text;
@@ -418,6 +469,13 @@ impl Gen {
             sys.push_str(&format!(
                 "  instance q: C{qa};\n  connect p.x -> q.c;\n  connect p.oe -> q.e1;\n"
             ));
+            if self.arrays {
+                sys.push_str(if self.chance(60) {
+                    "  connect p.g[*] -> q.r[*];\n"
+                } else {
+                    "  connect p.g[1] -> q.r[0];\n"
+                });
+            }
         }
         for e in &extras {
             sys.push_str(&e.after);

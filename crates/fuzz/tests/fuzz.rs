@@ -166,3 +166,32 @@ fn inputs_that_once_failed_pass_their_target() {
     }
     assert!(n >= 2, "{n} saved inputs");
 }
+
+#[test]
+fn generated_arrays_loops_and_element_connections_are_accepted() {
+    // Arrays of variables (`input r[2]`, `output g[2]`, drawn with chance 1/4), read and
+    // written by constant index and in `for j in 0..2` loops, and between two instances
+    // (chance 3/10 each) connected element by element (`[*]`) or one element to another.
+    // In 300 models each construct occurs (missing the rarest, both arrays and two
+    // instances with a `[*]`, has probability at most (1 - 1/4 · 3/10 · 3/5)^300 < 10^-5),
+    // and the checker accepts every model with arrays (only E0104, a constant out of range,
+    // may reject one).
+    let (mut arrays, mut loops, mut star, mut checked) = (0, 0, 0, 0);
+    for seed in 0..300u64 {
+        let text = statecheck_fuzz::gen::Gen::new(seed).model_with(true);
+        if !text.contains("input r[2]: int[0..3]") {
+            continue;
+        }
+        arrays += 1;
+        loops += usize::from(text.contains("for j in 0..2 {"));
+        star += usize::from(text.contains("connect p.g[*] -> q.r[*];"));
+        match statecheck_fuzz::diff::lower(&text) {
+            Ok(_) => checked += 1,
+            Err(e) => assert!(e.contains("E0104"), "{e}\n{text}"),
+        }
+    }
+    assert!(
+        arrays > 40 && loops > 0 && star > 0 && checked > 20,
+        "{arrays} {loops} {star} {checked}"
+    );
+}

@@ -19,6 +19,9 @@ pub struct LassoRun {
     pub broken: Option<String>,
     /// False when the lasso is not fair (the temporal properties were not evaluated).
     pub fair: bool,
+    /// Every `ltl` (and unbounded `respond`) property the lasso violates, in declaration
+    /// order (`run.stop` names the first).
+    pub violated: Vec<String>,
 }
 
 /// Replay `sc`, whose `loop_start` is set.
@@ -36,6 +39,7 @@ pub fn run_lasso(program: &Program, sc: &Scenario, opts: Options) -> LassoRun {
             run: first,
             broken: None,
             fair: true,
+            violated: Vec::new(),
         };
     }
     let mut vectors = first.inputs.clone();
@@ -60,6 +64,7 @@ pub fn run_lasso(program: &Program, sc: &Scenario, opts: Options) -> LassoRun {
         run: first,
         broken,
         fair: true,
+        violated: Vec::new(),
     };
     if out.broken.is_some() {
         return out;
@@ -74,15 +79,21 @@ pub fn run_lasso(program: &Program, sc: &Scenario, opts: Options) -> LassoRun {
     if !out.fair {
         return out;
     }
-    let violated = program.temporal.iter().find(|p| match &p.formula {
-        TemporalFormula::Ltl(f) => !holds_on_lasso(f, &holds, t, k),
-        TemporalFormula::Ctl(_) => false,
-    });
-    if let Some(p) = violated {
+    let violated: Vec<String> = program
+        .temporal
+        .iter()
+        .filter(|p| match &p.formula {
+            TemporalFormula::Ltl(f) => !holds_on_lasso(f, &holds, t, k),
+            TemporalFormula::Ctl(_) => false,
+        })
+        .map(|p| p.name.clone())
+        .collect();
+    if let Some(p) = violated.first() {
         out.run.stop = Stop::Violation {
             tick: (t - 1) as u64,
-            property: p.name.clone(),
+            property: p.clone(),
         };
     }
+    out.violated = violated;
     out
 }

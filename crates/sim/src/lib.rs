@@ -6,6 +6,7 @@
 
 pub mod choices;
 pub mod guided;
+pub mod hunt;
 pub mod lasso;
 pub mod minimise;
 pub mod random;

@@ -21,6 +21,8 @@ pub enum Engine {
     Kind,
     /// IC3/PDR.
     Ic3,
+    /// IC3 on a localization abstraction refined by counterexamples ([`crate::localize`]).
+    Cegar,
 }
 
 impl Engine {
@@ -30,6 +32,7 @@ impl Engine {
             Engine::Bmc => "bmc",
             Engine::Kind => "kind",
             Engine::Ic3 => "ic3",
+            Engine::Cegar => "cegar",
         }
     }
 
@@ -39,6 +42,7 @@ impl Engine {
             Engine::Bmc => crate::bmc::bmc(aig, limits),
             Engine::Kind => crate::kind::kind(aig, limits),
             Engine::Ic3 => crate::ic3::ic3(aig, limits),
+            Engine::Cegar => crate::localize::cegar(aig, limits),
         })
     }
 }
@@ -198,7 +202,9 @@ fn run_with(
     if engine == Engine::Bmc {
         return engine.run(aig, limits);
     }
-    if !ready {
+    // Localization waits for the reduction: on the circuit as blasted a bad output reads
+    // most latches (`crate::localize`), so its quick attempt would be IC3's again.
+    if !ready && engine != Engine::Cegar {
         let quick = engine.run(aig, &limits.attempt_until(Instant::now() + QUICK));
         if !matches!(quick, Outcome::Unknown(_)) || limits.expired().is_some() {
             return quick;
@@ -228,6 +234,16 @@ fn run_with(
                 crate::ic3::ic3_resume(&red.aig, limits, &given, &mut frames)
             });
             store.keep_frames(k, frames);
+            if let Outcome::Proved(Some(inv)) = &out {
+                store.learn(inv);
+            }
+            out
+        }
+        (Engine::Cegar, Some((store, _))) => {
+            let given = store.lemmas();
+            let (out, _) = crate::sat::with_limits(limits, || {
+                crate::localize::cegar_with_lemmas(&red.aig, limits, &given)
+            });
             if let Outcome::Proved(Some(inv)) = &out {
                 store.learn(inv);
             }

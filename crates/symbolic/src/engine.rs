@@ -4,8 +4,11 @@ use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::{Arc, RwLock};
 use std::time::Instant;
 
-/// A check of the process's memory limit: true once the process has grown past it.
-pub type MemoryProbe = Arc<dyn Fn() -> bool + Send + Sync>;
+/// A check of the process's memory limit: `probe(extra)` is true once the process has grown
+/// past it, or would with `extra` more bytes (an allocation about to be made: the SAT
+/// solver's tables doubled when its variables pass a power of two, see [`crate::sat`]).
+/// Once it has answered true it must keep answering true (the run is being stopped).
+pub type MemoryProbe = Arc<dyn Fn(u64) -> bool + Send + Sync>;
 
 /// The process's memory probe, installed by the edge that owns `--max-memory` (the resident
 /// set is the whole process's, and reading it is I/O, which this crate does not do).
@@ -25,11 +28,17 @@ pub fn set_memory_probe(probe: Option<MemoryProbe>) {
 
 /// Has the process passed its memory limit (false without a probe)?
 fn memory_exceeded() -> bool {
+    memory_exceeded_by(0)
+}
+
+/// Would the process pass its memory limit with `extra` more bytes (false without a probe)?
+/// A true answer stops the run with the memory limit as its reason.
+pub(crate) fn memory_exceeded_by(extra: u64) -> bool {
     let probe = MEMORY_PROBE
         .read()
         .unwrap_or_else(|e| e.into_inner())
         .clone();
-    probe.is_some_and(|p| p())
+    probe.is_some_and(|p| p(extra))
 }
 
 /// The reason of an `unknown` when the memory probe stopped the engine.

@@ -45,6 +45,13 @@ impl Terminator for LimitTerminator {
     }
 }
 
+/// Bytes CaDiCaL allocates per variable of room in its per-variable tables, internal
+/// (two watch lists, values, phases, scores, links, flags, trail data) and external (the
+/// variable maps): measured on the FAM closed loop's unrolling, whose tables grew from 2^19
+/// to 2^20 variables with the resident set going from 211 to 300 MiB (about 170 bytes per
+/// added variable of room), rounded up.
+const BYTES_PER_VAR: u64 = 192;
+
 /// A solver literal: variable `v` (0-based) is CaDiCaL's variable `v + 1`, negative when the
 /// literal is negated.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
@@ -82,6 +89,12 @@ pub struct Solver {
     /// (`factor`) may only introduce variables above them.
     declared: u32,
     t: SLit,
+    /// The variables CaDiCaL's per-variable tables have room for (its `vsize`, which it
+    /// doubles as variables are declared past it).
+    room: u32,
+    /// A growth of the tables was refused by the memory limit: clauses are no longer added
+    /// and every `solve` answers "unknown" (the engines then report the memory limit).
+    over: bool,
     /// The assumptions of the last `solve`, for `failed`.
     assumed: Vec<SLit>,
     /// The last answer: `val` and `failed` may only be asked in the matching state.
@@ -124,6 +137,8 @@ impl Solver {
             vars: 0,
             declared: 0,
             t: SLit::positive(0),
+            room: 0,
+            over: false,
             assumed: Vec::new(),
             last: None,
         };
@@ -144,18 +159,49 @@ impl Solver {
         l
     }
 
-    /// Declares the variables handed out since the last call.
+    /// Declares the variables handed out since the last call. When they pass the room of
+    /// CaDiCaL's per-variable tables, which it then doubles at once (hundreds of MB on a large
+    /// unrolling, out of sight of any probe between two frames), the memory limit is asked
+    /// first with the bytes about to be allocated; if they would pass it, nothing is declared
+    /// and the solver is [`Solver::over`] the limit.
     fn declare(&mut self) {
-        if self.declared < self.vars {
-            self.s.resize(i32::try_from(self.vars).unwrap_or(i32::MAX));
-            self.declared = self.vars;
+        if self.declared >= self.vars || self.over {
+            return;
         }
+        if self.vars >= self.room {
+            // CaDiCaL's `enlarge`: the first size is one more than the variables, then it
+            // doubles until they fit.
+            let mut room = if self.room == 0 {
+                self.vars.saturating_add(1)
+            } else {
+                self.room.saturating_mul(2)
+            };
+            while room <= self.vars && room < u32::MAX {
+                room = room.saturating_mul(2);
+            }
+            let extra = u64::from(room - self.room) * BYTES_PER_VAR;
+            if crate::engine::memory_exceeded_by(extra) {
+                self.over = true;
+                return;
+            }
+            self.room = room;
+        }
+        self.s.resize(i32::try_from(self.vars).unwrap_or(i32::MAX));
+        self.declared = self.vars;
+    }
+
+    /// Whether the memory limit refused this solver's growth (then it answers "unknown").
+    pub fn over(&self) -> bool {
+        self.over
     }
 
     /// Add a clause.
     pub fn add(&mut self, clause: &[SLit]) {
         self.declare();
         self.last = None;
+        if self.over {
+            return;
+        }
         match clause {
             [a] => self.s.clause1(a.dimacs()),
             [a, b] => self.s.clause2(a.dimacs(), b.dimacs()),
@@ -173,6 +219,10 @@ impl Solver {
     /// when the solver failed.
     pub fn solve(&mut self, assumps: &[SLit]) -> Option<bool> {
         self.declare();
+        if self.over {
+            self.last = None;
+            return None;
+        }
         self.assumed.clear();
         self.assumed.extend_from_slice(assumps);
         for l in assumps {

@@ -114,7 +114,7 @@ fn the_memory_probe_stops_every_engine_inside_a_sat_call() {
     let me = std::thread::current().id();
     let over = Arc::new(AtomicBool::new(false));
     let probe_over = Arc::clone(&over);
-    statecheck_symbolic::engine::set_memory_probe(Some(Arc::new(move || {
+    statecheck_symbolic::engine::set_memory_probe(Some(Arc::new(move |_extra: u64| {
         std::thread::current().id() == me && probe_over.load(Ordering::Relaxed)
     })));
     for engine in ENGINES {

@@ -4,7 +4,9 @@
 //! order), the groups in instance order or in a given order ([`Encoding::with_order`]). Both engines express their results in this
 //! encoding so that guard simplification is shared.
 
+use crate::limits::Budget;
 use crate::problem::Problem;
+use crate::Error;
 use biodivine_lib_bdd::{Bdd, BddPartialValuation, BddValuation, BddVariable, BddVariableSet};
 
 /// The BDD variables of a problem's location vectors.
@@ -136,41 +138,82 @@ impl Encoding {
     /// set `on ∪ off`): automata whose locations do not matter are quantified away greedily,
     /// then the shorter of the predicate and its negation's DNF is kept.
     pub fn simplify(&self, on: &Bdd, off: &Bdd) -> Formula {
-        let pos = self.eliminate(on, off);
-        let neg = self.eliminate(off, on);
-        let p = self.dnf(&pos);
-        let n = self.dnf(&neg);
-        if n.size() < p.size() {
+        let none = Budget::new(&crate::Limits::default());
+        // No limit can be hit without limits.
+        self.simplify_until(on, off, &none, 0.0)
+            .unwrap_or_else(|_| self.dnf_paths(on))
+    }
+
+    /// [`Encoding::simplify`] under `budget`: `Err` (phase `guards`, with `states` as the
+    /// figure reached) as soon as a limit is hit, also inside the optimised DNF.
+    pub fn simplify_until(
+        &self,
+        on: &Bdd,
+        off: &Bdd,
+        budget: &Budget,
+        states: f64,
+    ) -> Result<Formula, Error> {
+        let check = || budget.check("guards", states, 0);
+        let pos = self.eliminate(on, off, &check)?;
+        let neg = self.eliminate(off, on, &check)?;
+        let p = self.dnf(&pos, &check)?;
+        let n = self.dnf(&neg, &check)?;
+        Ok(if n.size() < p.size() {
             Formula { negated: true, ..n }
         } else {
             p
-        }
+        })
     }
 
-    fn eliminate(&self, on: &Bdd, off: &Bdd) -> Bdd {
+    fn eliminate(
+        &self,
+        on: &Bdd,
+        off: &Bdd,
+        check: &dyn Fn() -> Result<(), Error>,
+    ) -> Result<Bdd, Error> {
         let mut g = on.clone();
         for bits in &self.bits {
+            check()?;
             let cand = g.exists(bits);
             if cand.and(off).is_false() {
                 g = cand;
             }
         }
-        g
+        Ok(g)
     }
 
     /// The BDD's paths as clauses; past [`SMALL_DNF`] paths, the library's optimised DNF
     /// (prime-implicant style merging of cubes) instead, which is much shorter on large guards.
-    fn dnf(&self, g: &Bdd) -> Formula {
-        let mut clauses = Vec::new();
+    /// `check` is polled between steps (and every [`POLL`] paths).
+    fn dnf(&self, g: &Bdd, check: &dyn Fn() -> Result<(), Error>) -> Result<Formula, Error> {
         let mut paths: Vec<BddPartialValuation> = g.sat_clauses().take(SMALL_DNF + 1).collect();
         if paths.len() > SMALL_DNF {
-            let opt = g.to_optimized_dnf();
-            if opt.len() < g.sat_clauses().count() {
-                paths = opt;
-            } else {
-                paths = g.sat_clauses().collect();
+            check()?;
+            let opt = g._to_optimized_dnf(true, &|_: &[BddPartialValuation]| check())?;
+            // The BDD's paths only when there are fewer of them (counted no further).
+            let mut fewer = Vec::new();
+            for (i, path) in g.sat_clauses().enumerate() {
+                if i >= opt.len() {
+                    fewer.clear();
+                    break;
+                }
+                if i % POLL == 0 {
+                    check()?;
+                }
+                fewer.push(path);
             }
+            paths = if fewer.is_empty() { opt } else { fewer };
         }
+        Ok(self.clauses(paths))
+    }
+
+    /// Every path of `g` as a clause (no simplification; no limit).
+    fn dnf_paths(&self, g: &Bdd) -> Formula {
+        self.clauses(g.sat_clauses().collect())
+    }
+
+    fn clauses(&self, paths: Vec<BddPartialValuation>) -> Formula {
+        let mut clauses = Vec::new();
         for path in paths {
             let mut clause = Vec::new();
             for (a, bits) in self.bits.iter().enumerate() {
@@ -199,6 +242,9 @@ impl Encoding {
         }
     }
 }
+
+/// How many paths of a BDD are enumerated between two polls of the budget.
+const POLL: usize = 1024;
 
 /// Guards with at most this many BDD paths are printed path by path (short guards keep their
 /// familiar form); longer ones go through [`Bdd::to_optimized_dnf`].

@@ -95,14 +95,21 @@ pub struct Explicit {
 
 /// Open-addressing set of state numbers, keyed by the packed words in the store. Each slot
 /// also keeps a tag: the key itself when it is one word (no look into the store at all), else
-/// its hash (the store is read only when the tags agree).
+/// its hash (the store is read only when the tags agree). Tag and number share a slot, so a
+/// probe touches one cache line.
 struct Visited {
-    slots: Vec<u32>,
-    tags: Vec<u64>,
+    slots: Vec<Slot>,
     mask: usize,
 }
 
+#[derive(Clone, Copy)]
+struct Slot {
+    tag: u64,
+    id: u32,
+}
+
 const EMPTY: u32 = u32::MAX;
+const FREE: Slot = Slot { tag: 0, id: EMPTY };
 
 #[inline]
 fn hash(key: &[u64]) -> u64 {
@@ -132,8 +139,7 @@ fn tag(key: &[u64], h: u64) -> u64 {
 impl Visited {
     fn new() -> Visited {
         Visited {
-            slots: vec![EMPTY; 1 << 12],
-            tags: vec![0; 1 << 12],
+            slots: vec![FREE; 1 << 12],
             mask: (1 << 12) - 1,
         }
     }
@@ -146,18 +152,17 @@ impl Visited {
         let mut i = h as usize & self.mask;
         loop {
             let s = self.slots[i];
-            if s == EMPTY {
-                self.slots[i] = next;
-                self.tags[i] = t;
+            if s.id == EMPTY {
+                self.slots[i] = Slot { tag: t, id: next };
                 return (next, true);
             }
-            if self.tags[i] == t {
+            if s.tag == t {
                 if words == 1 {
-                    return (s, false);
+                    return (s.id, false);
                 }
-                let at = s as usize * words;
+                let at = s.id as usize * words;
                 if &store[at..at + words] == key {
-                    return (s, false);
+                    return (s.id, false);
                 }
             }
             i = (i + 1) & self.mask;
@@ -170,23 +175,24 @@ impl Visited {
             return;
         }
         let n = self.slots.len() * 2;
-        self.slots = vec![EMPTY; n];
-        self.tags = vec![0; n];
+        self.slots = vec![FREE; n];
         self.mask = n - 1;
         for s in 0..count {
             let key = &store[s * words..(s + 1) * words];
             let h = hash(key);
             let mut i = h as usize & self.mask;
-            while self.slots[i] != EMPTY {
+            while self.slots[i].id != EMPTY {
                 i = (i + 1) & self.mask;
             }
-            self.slots[i] = s as u32;
-            self.tags[i] = tag(key, h);
+            self.slots[i] = Slot {
+                tag: tag(key, h),
+                id: s as u32,
+            };
         }
     }
 
     fn bytes(&self) -> u64 {
-        self.slots.len() as u64 * 12
+        self.slots.len() as u64 * std::mem::size_of::<Slot>() as u64
     }
 }
 
@@ -199,6 +205,67 @@ pub(crate) fn participants(p: &Problem) -> Vec<Vec<(usize, bool)>> {
         }
     }
     parts
+}
+
+/// Per plant automaton `a`, a bit set over the events per location (`ew` words each):
+/// the events `a` allows there, and every event outside its alphabet. `(masks, ew)`.
+fn plant_masks(p: &Problem) -> (Vec<(usize, Vec<u64>)>, usize) {
+    let n_ev = p.events.len();
+    let ew = n_ev.div_ceil(64).max(1);
+    let masks = p
+        .automata
+        .iter()
+        .enumerate()
+        .filter(|(_, a)| a.kind == Kind::Plant)
+        .map(|(ai, a)| {
+            let mut m = vec![0u64; a.locs.len() * ew];
+            for l in 0..a.locs.len() {
+                for e in 0..n_ev {
+                    if !a.has(e as EventId) || a.next[l * n_ev + e] != NONE {
+                        m[l * ew + e / 64] |= 1 << (e % 64);
+                    }
+                }
+            }
+            (ai, m)
+        })
+        .collect();
+    (masks, ew)
+}
+
+/// The set bits below `n` of a bit set, ascending.
+struct EventBits<'a> {
+    words: &'a [u64],
+    w: usize,
+    cur: u64,
+    n: usize,
+}
+
+impl<'a> EventBits<'a> {
+    fn new(words: &'a [u64], n: usize) -> EventBits<'a> {
+        EventBits {
+            words,
+            w: 0,
+            cur: words.first().copied().unwrap_or(0),
+            n,
+        }
+    }
+}
+
+impl Iterator for EventBits<'_> {
+    type Item = usize;
+    #[inline]
+    fn next(&mut self) -> Option<usize> {
+        loop {
+            if self.cur != 0 {
+                let b = self.cur.trailing_zeros() as usize;
+                self.cur &= self.cur - 1;
+                let e = self.w * 64 + b;
+                return (e < self.n).then_some(e);
+            }
+            self.w += 1;
+            self.cur = *self.words.get(self.w)?;
+        }
+    }
 }
 
 /// Run the explicit engine within `budget`.
@@ -227,6 +294,8 @@ pub fn run(p: &Problem, budget: &Budget) -> Result<Explicit, Error> {
     let mut locs = vec![0u32; p.automata.len()];
     let mut key = vec![0u64; words];
     let mut next = vec![0u64; words];
+    let (masks, ew) = plant_masks(p);
+    let mut en = vec![0u64; ew];
     let mut i = 0usize;
     while i < count {
         key.copy_from_slice(&store[i * words..(i + 1) * words]);
@@ -234,7 +303,16 @@ pub fn run(p: &Problem, budget: &Budget) -> Result<Explicit, Error> {
         let mut is_bad = p.is_forbidden(&locs);
         marked.push(p.is_marked(&locs));
         if !is_bad {
-            for e in 0..n_ev {
+            // The events every plant allows here (one AND per plant and mask word), then
+            // only those are tried.
+            en.fill(u64::MAX);
+            for (a, m) in &masks {
+                let row = &m[locs[*a] as usize * ew..(locs[*a] as usize + 1) * ew];
+                for (x, y) in en.iter_mut().zip(row) {
+                    *x &= y;
+                }
+            }
+            for e in EventBits::new(&en, n_ev) {
                 let (mut plant_ok, mut req_ok) = (true, true);
                 next.copy_from_slice(&key);
                 for &(a, is_plant) in &parts[e] {

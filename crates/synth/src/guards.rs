@@ -5,11 +5,22 @@
 
 use crate::encode::Encoding;
 use crate::explicit::{participants, Explicit};
+use crate::limits::Budget;
 use crate::problem::{EventId, Problem, NONE};
-use crate::Guard;
+use crate::{Error, Guard};
 
-/// One guard per controllable event, in event order.
-pub fn explicit_guards(p: &Problem, x: &Explicit, enc: &Encoding) -> Vec<Guard> {
+/// States between two polls of the budget.
+const POLL: usize = 4096;
+
+/// One guard per controllable event, in event order; `Err` when `budget` runs out (polled
+/// every [`POLL`] states and inside the simplification).
+pub fn explicit_guards(
+    p: &Problem,
+    x: &Explicit,
+    enc: &Encoding,
+    budget: &Budget,
+) -> Result<Vec<Guard>, Error> {
+    let states = x.product_states as f64;
     let n_ev = p.events.len();
     let parts = participants(p);
     let words = enc.minterm_words();
@@ -21,6 +32,9 @@ pub fn explicit_guards(p: &Problem, x: &Explicit, enc: &Encoding) -> Vec<Guard> 
     for s in 0..x.kept.len() {
         if !x.kept[s] {
             continue;
+        }
+        if s % POLL == 0 {
+            budget.check("guards", states, 0)?;
         }
         x.locs(s, &mut locs);
         term.clear();
@@ -52,12 +66,13 @@ pub fn explicit_guards(p: &Problem, x: &Explicit, enc: &Encoding) -> Vec<Guard> 
     (0..n_ev)
         .filter(|&e| p.events[e].controllable)
         .map(|e| {
+            budget.check("guards", states, 0)?;
             let on = crate::build::from_minterms(&enc.vars, words, &mut on[e]);
             let off = crate::build::from_minterms(&enc.vars, words, &mut off[e]);
-            Guard {
+            Ok(Guard {
                 event: e as EventId,
-                allow: enc.simplify(&on, &off),
-            }
+                allow: enc.simplify_until(&on, &off, budget, states)?,
+            })
         })
         .collect()
 }

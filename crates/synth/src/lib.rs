@@ -211,7 +211,7 @@ fn run_explicit(p: &Problem, o: &Options) -> Result<Synthesis, Error> {
     } else {
         let guards = if o.guards {
             budget.check("guards", x.product_states as f64, 0)?;
-            guards::explicit_guards(p, &x, &encode::Encoding::new(p))
+            guards::explicit_guards(p, &x, &encode::Encoding::new(p), &budget)?
         } else {
             Vec::new()
         };
@@ -253,7 +253,7 @@ fn run_symbolic(p: &Problem, o: &Options) -> Result<Synthesis, Error> {
             let off = s.reach.and(&s.plant_en[e]).and_not(on);
             guards.push(Guard {
                 event: e as EventId,
-                allow: s.enc.simplify(on, &off),
+                allow: s.enc.simplify_until(on, &off, &budget, product_states)?,
             });
         }
     }

@@ -131,3 +131,36 @@ fn parity_guard_reloads_and_checks() {
         assert_eq!(r.plant_states, 1536, "{engine:?}");
     }
 }
+
+/// Guards honour the budget: with the stop flag raised after the fixpoint, building the
+/// parity guard (512 clauses, so the optimised DNF runs) ends with a limit in phase `guards`
+/// instead of running on; without limits the same call gives the guard.
+#[test]
+fn guard_building_stops_at_the_limit() {
+    use statecheck_synth::{encode::Encoding, explicit, guards, Budget, ErrorKind, Limits};
+    use std::sync::atomic::{AtomicBool, Ordering};
+    use std::sync::Arc;
+    let p = parity_problem();
+    let stop = Arc::new(AtomicBool::new(false));
+    let budget = Budget::new(&Limits {
+        stop: Some(stop.clone()),
+        ..Limits::default()
+    });
+    let x = explicit::run(&p, &budget).expect("no limit hit yet");
+    assert_eq!(x.size(), 1536);
+    let enc = Encoding::new(&p);
+    assert_eq!(
+        guards::explicit_guards(&p, &x, &enc, &budget)
+            .map(|g| g.len())
+            .ok(),
+        Some(1)
+    );
+    stop.store(true, Ordering::Relaxed);
+    match guards::explicit_guards(&p, &x, &enc, &budget) {
+        Err(e) => match e.kind {
+            ErrorKind::Limit { partial, .. } => assert_eq!(partial.phase, "guards"),
+            other => panic!("not a limit: {other:?}"),
+        },
+        Ok(_) => panic!("the raised stop flag was ignored"),
+    }
+}

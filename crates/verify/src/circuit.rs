@@ -10,8 +10,10 @@ use std::sync::{mpsc, Arc};
 
 /// The symbolic engines raced on a circuit and in [`crate::Engine::Auto`]: IC3 for proofs,
 /// k-induction for proofs whose invariant is "no bad state within k ticks", BMC for deep
-/// counterexamples.
-pub(crate) const SYMBOLIC_RACE: [Engine; 3] = [Engine::Ic3, Engine::Kind, Engine::Bmc];
+/// counterexamples, and IC3 on localization abstractions for proofs that need only a small
+/// part of a large circuit (master + N FAMs: a property of slave 0).
+pub(crate) const SYMBOLIC_RACE: [Engine; 4] =
+    [Engine::Ic3, Engine::Kind, Engine::Bmc, Engine::Cegar];
 
 /// Decide the single bad output of `g` with `engine` (with signal-correspondence reduction
 /// where it pays).

@@ -40,6 +40,10 @@ pub enum Engine {
     Kind,
     /// IC3/PDR (proofs with an inductive invariant).
     Ic3,
+    /// IC3 on localization abstractions refined by counterexamples (`statecheck_symbolic::
+    /// localize`): the same answers as IC3, for properties that depend on a small part of a
+    /// large circuit.
+    Cegar,
     /// Explicit and SAT engines side by side; the first definitive verdict wins.
     Auto,
 }
@@ -52,17 +56,19 @@ impl Engine {
             Engine::Bmc => "bmc",
             Engine::Kind => "kind",
             Engine::Ic3 => "ic3",
+            Engine::Cegar => "cegar",
             Engine::Auto => "auto",
         }
     }
 
-    /// The SAT engine, for the three that are one.
+    /// The SAT engine, for the four that are one.
     pub fn symbolic(self) -> Option<statecheck_symbolic::check::Engine> {
         use statecheck_symbolic::check::Engine as S;
         match self {
             Engine::Bmc => Some(S::Bmc),
             Engine::Kind => Some(S::Kind),
             Engine::Ic3 => Some(S::Ic3),
+            Engine::Cegar => Some(S::Cegar),
             Engine::Explicit | Engine::Auto => None,
         }
     }
@@ -105,7 +111,8 @@ pub const REASON_PROPERTY_LIMIT: &str = "property time limit";
 /// Which engine decided a result, how long it took, and why it is `unknown`.
 #[derive(Clone, Debug, Default)]
 pub struct Meta {
-    /// `explicit`, `bmc`, `kind`, `ic3`, or `auto` when no engine answered.
+    /// `explicit`, `bmc`, `kind`, `ic3`, `klive` (k-liveness), `sim` (the lasso hunt of a
+    /// temporal row), or `auto` when no engine answered.
     pub engine: &'static str,
     /// Seconds spent on this property (`None`: the explicit engine's run time, shared by all).
     pub time_s: Option<f64>,

@@ -75,6 +75,7 @@ struct Row {
 
 enum Msg {
     Explicit(Vec<PropResult>, Duration),
+    Hunt(usize, PropResult, Duration),
     Sat(
         usize,
         &'static str,
@@ -153,7 +154,8 @@ pub(crate) fn run(
 /// The methods each SAT engine runs on an LTL row.
 fn methods(engine: Engine) -> Vec<Method> {
     match engine {
-        Engine::Ic3 => vec![Method::L2s(Sat::Ic3), Method::KLive],
+        // Localization abstraction is for safety rows; liveness runs IC3's methods.
+        Engine::Ic3 | Engine::Cegar => vec![Method::L2s(Sat::Ic3), Method::KLive],
         Engine::Kind => vec![Method::L2s(Sat::Kind)],
         Engine::Bmc => vec![Method::L2s(Sat::Bmc)],
         Engine::Auto | Engine::Explicit => {
@@ -257,6 +259,16 @@ fn race(
     };
     let bl = (!order.is_empty()).then(|| blast(program));
     std::thread::scope(|s| {
+        if auto && !order.is_empty() {
+            workers += 1;
+            let tx = tx.clone();
+            let (order, flags, stop) = (&order, &flags, &stop);
+            s.spawn(move || {
+                crate::priority::lower_priority();
+                hunt(program, rows, order, flags, stop, deadline, &tx);
+                let _ = tx.send(Msg::Done);
+            });
+        }
         if let Some(bl) = &bl {
             for m in methods(opts.engine) {
                 workers += 1;
@@ -334,6 +346,17 @@ fn race(
                         }
                     }
                 }
+                Msg::Hunt(i, r, t) => {
+                    let m = Meta {
+                        engine: HUNT_ENGINE,
+                        time_s: Some(t.as_secs_f64()),
+                        reason: None,
+                        decided_at_s: at,
+                    };
+                    if is_open(i) {
+                        decide(i, r, m);
+                    }
+                }
                 Msg::Sat(i, engine, s) => {
                     let mut m = single::meta_of(engine, &s);
                     m.decided_at_s = at;
@@ -380,6 +403,48 @@ fn race(
         *g = Some((r, m));
     }
     got.into_iter().flatten().collect()
+}
+
+/// The engine name of a lasso found by [`hunt`] (`"engine"` in `verify --json`).
+const HUNT_ENGINE: &str = "sim";
+
+/// The lasso hunt of the simulator (`statecheck_sim::hunt`) on the LTL rows `order`, until
+/// each is decided (by it or another engine), the deadline or `stop`: each lasso it finds,
+/// already confirmed by a replay of its scenario, is sent as the row's violation.
+fn hunt(
+    program: &Program,
+    rows: &[Row],
+    order: &[usize],
+    flags: &[Arc<AtomicBool>],
+    stop: &AtomicBool,
+    deadline: Option<Instant>,
+    tx: &mpsc::Sender<Msg>,
+) {
+    let started = Instant::now();
+    let targets: Vec<usize> = order.iter().filter_map(|&i| rows[i].temporal).collect();
+    let row_of = |t: usize| order.iter().copied().find(|&i| rows[i].temporal == Some(t));
+    let opts = statecheck_sim::hunt::HuntOptions {
+        deadline,
+        stop: Some(stop),
+        ..Default::default()
+    };
+    let is_open = |t: usize| row_of(t).is_some_and(|i| !flags[i].load(Ordering::Relaxed));
+    statecheck_sim::hunt::hunt(program, &targets, &opts, &is_open, &mut |f| {
+        let Some(i) = row_of(f.property) else {
+            return;
+        };
+        let r = PropResult {
+            name: rows[i].name.clone(),
+            kind: rows[i].kind,
+            verdict: statecheck_ir::verdict::Verdict::Violated,
+            depth: f.inputs.len() as u64,
+            counterexample: Some(f.inputs),
+            error: None,
+            note: None,
+            loop_start: Some(f.loop_start as u64),
+        };
+        let _ = tx.send(Msg::Hunt(i, r, started.elapsed()));
+    });
 }
 
 /// True when every `assume` conjunct reads only inputs and some input vector satisfies them

@@ -7,6 +7,18 @@ import "../fam_system.sc";
 fn calm(stall: bool, hsl: bool, epm: bool, fbf: bool, req: bool, rsp: bool) -> bool =
   !(stall || hsl || epm || fbf || req || rsp);
 
+// No fault input is raised in this tick but a stall at an end stop: the FAM (at `pos`, moving
+// decrementally when `dir`) is within SPEED_HIGH positions past an end of the flap's factory
+// range [E1F, E1F + RANGE] and was moving outwards, where only a calibration run goes
+// (D.3.2.1: "move until the actuator recognizes stall detection"). (A stall tick stops the
+// FAM without moving it, so `pos` and `dir` are those of the move it stopped.)
+fn atEndStop(pos: int[0..4095], dir: bool) -> bool =
+  (sdist(pos, E1F) < 0 && sdist(pos, E1F) >= -SPEED_HIGH && dir)
+  || (sdist(pos, E1F) > RANGE && sdist(pos, E1F) <= RANGE + SPEED_HIGH && !dir);
+fn calmEnd(stall: bool, hsl: bool, epm: bool, fbf: bool, req: bool, rsp: bool,
+           pos: int[0..4095], dir: bool) -> bool =
+  !(hsl || epm || fbf || req || rsp) && (!stall || atEndStop(pos, dir));
+
 system FamLive {
   instance tie: Tie;
   instance bus: MasterBus(1);
@@ -79,5 +91,44 @@ system FamLive {
   // FAM's position eventually equals the master's target for good.
   ltl reaches_target:
     F G (calm(fam.stallNow, fam.hslFault, fam.epmFault, fam.fbfFault, bus.corrupt, ctrl.corrupt) && ctrl.ccm == 500)
+    => F G fam.actualPos == ctrl.targetPos;
+
+  // The corrected statements (docs/case-studies/temporal.md, "Corrected formulas"). The three
+  // above are kept (names are contracts) and stay violated.
+
+  // The stall procedure completes unless the master has entered a permanent failure mode:
+  // there it requests FAILURE_RUN "until power off" (D.3.2.3), which has no stall detection
+  // (Table C.3), and never STOP_STALL. Expected to hold: out of HSL_PERM and FBF_PERM a
+  // stall flag seen in a calm run sends the master to STALL_ACK (calibAndStall checks
+  // rStall before the other phases), whose STOP_STALL clears it once the FAM stands.
+  ltl stall_procedure_completes_unless_permanent:
+    F G calm(fam.stallNow, fam.hslFault, fam.epmFault, fam.fbfFault, bus.corrupt, ctrl.corrupt)
+    => G((fam.stall && ctrl.phase != HSL_PERM && ctrl.phase != FBF_PERM)
+         => F(!fam.stall || ctrl.phase == HSL_PERM || ctrl.phase == FBF_PERM));
+
+  // After a failure is cleared the master recalibrates, or enters a permanent failure mode,
+  // with end stops: from some tick on the only fault is a stall at an end stop (calmEnd), and
+  // a FAM that runs outside the range infinitely often stalls infinitely often (compassion,
+  // written in the formula). Expected to hold: a calibration run aims outside the range, so
+  // it ends in a stall at the end stop (or bounces, D.3.2.1 note, and is retried from
+  // NORMAL, the compassion making one of the retries stall); the stall lies in the gray
+  // zone, so STALL_ACK re-references the end and goes to CLEAR_CALIB, whose CLEAR_NOT_CALIB
+  // clears notCalib, then NORMAL. A fault before calm may instead end in HSL_PERM or
+  // FBF_PERM, where the master never calibrates (FAILURE_RUN "until power off", D.3.2.3).
+  ltl recalibrates_with_end_stops:
+    (F G calmEnd(fam.stallNow, fam.hslFault, fam.epmFault, fam.fbfFault, bus.corrupt,
+                 ctrl.corrupt, fam.actualPos, fam.dir)
+     && (G F (fam.run && !inRange(fam.actualPos, E1F)) => G F fam.stall))
+    => G((ctrl.phase == FAIL_WAIT && (ctrl.rFail & MAJOR) == 0)
+         => F((ctrl.phase == NORMAL && !fam.notCalib)
+              || ctrl.phase == HSL_PERM || ctrl.phase == FBF_PERM));
+
+  // The FAM reaches a commanded target, with end stops (the assumptions above, and the CCM
+  // held at 500; in HSL_PERM and FBF_PERM FAILURE_RUN goes to the CCM's target too). Expected to hold: once calibrated (or in a permanent mode's FAILURE_RUN)
+  // the master commands the CCM's target inside the range and the FAM runs there and stays.
+  ltl reaches_target_with_end_stops:
+    (F G (calmEnd(fam.stallNow, fam.hslFault, fam.epmFault, fam.fbfFault, bus.corrupt,
+                  ctrl.corrupt, fam.actualPos, fam.dir) && ctrl.ccm == 500)
+     && (G F (fam.run && !inRange(fam.actualPos, E1F)) => G F fam.stall))
     => F G fam.actualPos == ctrl.targetPos;
 }

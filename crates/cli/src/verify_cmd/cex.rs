@@ -77,7 +77,15 @@ pub fn one(
         let (sc, run, broken) = match r.loop_start {
             Some(k) => {
                 let sc = scenario::from_lasso(program, vectors, k as usize);
-                let l = statecheck_sim::lasso::run_lasso(program, &sc, Options::default());
+                let mut l = statecheck_sim::lasso::run_lasso(program, &sc, Options::default());
+                // A lasso may violate several properties; the replay names the first one
+                // declared, and what is checked is that it violates this one.
+                if l.violated.contains(&r.name) {
+                    l.run.stop = Stop::Violation {
+                        tick: (sc.len() as u64).saturating_sub(1),
+                        property: r.name.clone(),
+                    };
+                }
                 (sc, l.run, l.broken)
             }
             None => {

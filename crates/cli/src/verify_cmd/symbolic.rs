@@ -20,6 +20,9 @@ pub enum EngineArg {
     Kind,
     /// IC3/PDR (proofs with an inductive invariant).
     Ic3,
+    /// IC3 on localization abstractions refined by counterexamples (safety properties of
+    /// large circuits that depend on a small part of them; liveness as with ic3).
+    Cegar,
     /// Explicit and symbolic engines side by side; the first definitive verdict wins.
     Auto,
 }
@@ -32,6 +35,7 @@ impl From<EngineArg> for statecheck_verify::Engine {
             EngineArg::Bmc => E::Bmc,
             EngineArg::Kind => E::Kind,
             EngineArg::Ic3 => E::Ic3,
+            EngineArg::Cegar => E::Cegar,
             EngineArg::Auto => E::Auto,
         }
     }
@@ -299,7 +303,7 @@ fn justice_row(aig: &Aig, k: usize, name: &str, a: &AigerRun) -> Row {
     use statecheck_symbolic::live::{LiveOutcome, Method};
     let method = match a.engine {
         EngineArg::Auto | EngineArg::Explicit => None,
-        EngineArg::Ic3 => Some(Method::L2s(Engine::Ic3)),
+        EngineArg::Ic3 | EngineArg::Cegar => Some(Method::L2s(Engine::Ic3)),
         EngineArg::Kind => Some(Method::L2s(Engine::Kind)),
         EngineArg::Bmc => Some(Method::L2s(Engine::Bmc)),
     };

@@ -43,7 +43,9 @@ impl Drop for Watchdog {
 }
 
 /// The SAT engines' memory probe: the resident set read at most every [`PROBE_EVERY`], on
-/// the engine's own thread, and the run cancelled (reason "memory limit") past `trigger`.
+/// the engine's own thread, and the run cancelled (reason "memory limit") past `trigger`, or
+/// when an allocation the engine announces (`extra` bytes: CaDiCaL's tables about to double)
+/// would take it past.
 /// CaDiCaL allocates in C++, out of sight of any Rust allocator, and grows in bursts (a
 /// frame's clauses, arrays doubled when the variables pass a power of two: hundreds of MB/s);
 /// the watchdog thread alone, which a loaded machine may schedule tens of milliseconds late,
@@ -53,17 +55,18 @@ fn probe(cancel: &Cancel, trigger: u64) -> statecheck_symbolic::engine::MemoryPr
     let origin = Instant::now();
     // Microseconds since `origin` of the last reading.
     let last = AtomicU64::new(0);
-    Arc::new(move || {
+    Arc::new(move |extra: u64| {
         if cancel.reason() == Some(CancelReason::Memory) {
             return true;
         }
         let now = u64::try_from(origin.elapsed().as_micros()).unwrap_or(u64::MAX);
         let prev = last.load(Ordering::Relaxed);
-        if prev != 0 && now.saturating_sub(prev) < PROBE_EVERY.as_micros() as u64 {
+        // An announced allocation is always weighed against a fresh reading (they are rare).
+        if extra == 0 && prev != 0 && now.saturating_sub(prev) < PROBE_EVERY.as_micros() as u64 {
             return false;
         }
         last.store(now.max(1), Ordering::Relaxed);
-        if rss().is_some_and(|r| r > trigger) {
+        if rss().is_some_and(|r| r.saturating_add(extra) > trigger) {
             cancel.raise(CancelReason::Memory);
             return true;
         }

@@ -218,15 +218,7 @@ fn diff(a: &Args) -> Result<ExitCode, String> {
                     r.compile_failures.len(),
                     began.elapsed().as_secs_f64()
                 );
-                t.models += r.models;
-                t.rejected += r.rejected;
-                t.verdicts += r.verdicts;
-                t.replays += r.replays;
-                t.c_models += r.c_models;
-                t.rust_models += r.rust_models;
-                t.spin_ok += r.spin_ok;
-                t.failures.extend(r.failures);
-                t.compile_failures.extend(r.compile_failures);
+                t.add(r);
             });
         }
     });
@@ -248,6 +240,18 @@ fn diff(a: &Args) -> Result<ExitCode, String> {
     println!(
         "seconds           {secs:.1} ({:.1} models/s)",
         t.models as f64 / secs.max(1e-9)
+    );
+    let ph = &t.times;
+    println!(
+        "phase seconds     lower {:.1}, explicit {:.1}, sat {:.1}, spin {:.1}, codegen {:.1}, gcc {:.1}, rustc {:.1}, run {:.1}",
+        ph.lower.as_secs_f64(),
+        ph.explicit.as_secs_f64(),
+        ph.sat.as_secs_f64(),
+        ph.spin.as_secs_f64(),
+        ph.codegen.as_secs_f64(),
+        ph.gcc.as_secs_f64(),
+        ph.rustc.as_secs_f64(),
+        ph.run.as_secs_f64()
     );
     for f in t.failures.iter().chain(&t.compile_failures).take(3) {
         println!("---\n{}", f.chars().take(3000).collect::<String>());
