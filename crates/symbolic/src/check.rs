@@ -122,7 +122,7 @@ impl Reductions {
     }
 
     /// Keep the clauses of `inv` (an invariant proved on the shared reduction, which ends with
-    /// those of the lemmas it was given that it used) for later proofs: the clauses not yet
+    /// the lemmas it was given) for later proofs: the clauses not yet
     /// kept, while they fit under [`MAX_LEMMAS`].
     fn learn(&self, inv: &Invariant) {
         let mut l = self.lemmas.lock().unwrap_or_else(|e| e.into_inner());

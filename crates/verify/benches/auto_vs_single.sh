@@ -24,7 +24,9 @@ fam_no_flags() {
   local out=/tmp/auto_vs_single.$$.jsonl tf=/tmp/auto_vs_single.$$.time
   echo "fam_system.sc, no flags (load average before: $(cut -d' ' -f1-3 /proc/loadavg)):"
   /usr/bin/time -f '%e %U %S' -o "$tf" "$BIN" verify examples/fam/fam_system.sc --json-lines >"$out" 2>/dev/null
-  read -r wall user sys <"$tf"
+  # The last line: GNU time first writes "Command exited with non-zero status N" when the
+  # run's exit code is not 0 (a violated property gives 1).
+  read -r wall user sys < <(tail -n 1 "$tf")
   python3 - "$out" "$wall" "$user" "$sys" <<'PY'
 import json, sys
 rows = [r for r in (json.loads(l) for l in open(sys.argv[1]) if l.strip()) if "property" in r]
