@@ -177,8 +177,16 @@ pub fn definition(
 /// Find references: every occurrence, the declaration included if asked.
 pub fn references(doc: &Doc<'_>, p: lt::ReferenceParams) -> Option<Vec<lt::Location>> {
     let lines = Lines::new(doc.text);
-    let ix = index(doc.text);
     let off = lines.offset(p.text_document_position.position) as u32;
+    if let Some(all) = across_imports(doc, off) {
+        return Some(
+            all.into_iter()
+                .filter(|o| p.context.include_declaration || !o.is_decl)
+                .map(|o| lt::Location::new(o.uri, o.range))
+                .collect(),
+        );
+    }
+    let ix = index(doc.text);
     let (_, sym) = ix.at(off)?;
     let decl = ix.symbols[sym].decl;
     Some(
@@ -188,6 +196,26 @@ pub fn references(doc: &Doc<'_>, p: lt::ReferenceParams) -> Option<Vec<lt::Locat
             .map(|s| lt::Location::new(doc.uri.clone(), lines.range(s)))
             .collect(),
     )
+}
+
+/// The occurrences of the symbol at `off` across the document and its imports, when the
+/// document imports files and the symbol is found in the whole program.
+fn across_imports(doc: &Doc<'_>, off: u32) -> Option<Vec<crate::imports::Occurrence>> {
+    let (file, _) = statecheck_syntax::parse(doc.text);
+    crate::imports::occurrences(doc.uri, doc.text, &file, off)
+}
+
+/// A workspace edit of several documents (the edits of each in the order given).
+#[allow(clippy::mutable_key_type)] // reason: the protocol type's map is keyed by `Uri`
+fn edits_by_file(edits: impl Iterator<Item = (lt::Uri, lt::TextEdit)>) -> lt::WorkspaceEdit {
+    let mut changes: HashMap<lt::Uri, Vec<lt::TextEdit>> = HashMap::new();
+    for (uri, edit) in edits {
+        changes.entry(uri).or_default().push(edit);
+    }
+    lt::WorkspaceEdit {
+        changes: Some(changes),
+        ..lt::WorkspaceEdit::default()
+    }
 }
 
 /// A workspace edit of one document. (`Uri` caches its parse lazily, which clippy counts as
@@ -216,8 +244,14 @@ pub fn rename(doc: &Doc<'_>, p: lt::RenameParams) -> Option<lt::WorkspaceEdit> {
         return None;
     }
     let lines = Lines::new(doc.text);
-    let ix = index(doc.text);
     let off = lines.offset(p.text_document_position.position) as u32;
+    if let Some(all) = across_imports(doc, off) {
+        let edits = all
+            .into_iter()
+            .map(|o| (o.uri, lt::TextEdit::new(o.range, p.new_name.clone())));
+        return Some(edits_by_file(edits));
+    }
+    let ix = index(doc.text);
     let (_, sym) = ix.at(off)?;
     let edits = ix
         .occurrences_of(sym)

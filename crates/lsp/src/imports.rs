@@ -156,3 +156,52 @@ pub(crate) fn definition(
     let range = Lines::new(program.sources.file_text(f)).range(local);
     Some(lt::Location::new(path_uri(Path::new(&f.name))?, range))
 }
+
+/// One occurrence of a symbol in the program of a document that imports files.
+pub(crate) struct Occurrence {
+    /// The file it is in (the document's own URI for the document).
+    pub uri: lt::Uri,
+    /// Where, in that file.
+    pub range: lt::Range,
+    /// Whether it is the declaration.
+    pub is_decl: bool,
+}
+
+/// Every occurrence of the symbol at byte `offset` of the document, across the document and
+/// the files it imports (the whole program indexed as one file, so a chart, constant or
+/// function declared in a library is found in every file that uses it): `None` when the
+/// document imports nothing or no symbol is there.
+pub(crate) fn occurrences(
+    uri: &lt::Uri,
+    text: &str,
+    file: &ast::File,
+    offset: u32,
+) -> Option<Vec<Occurrence>> {
+    let program = program(uri, text, file)?;
+    let root_end = program.sources.files.first()?.end;
+    let ix = crate::index::Index::new(&program.file);
+    let (_, sym) = ix.at(offset)?;
+    let decl = ix.symbols[sym].decl;
+    let mut out = Vec::new();
+    for s in ix.occurrences_of(sym) {
+        let Some((f, at)) = program.sources.locate(s.start as usize) else {
+            continue;
+        };
+        let local = statecheck_base::Span::new(at, at + (s.end - s.start) as usize);
+        let range = Lines::new(program.sources.file_text(f)).range(local);
+        let file_uri = if (s.start as usize) < root_end {
+            uri.clone()
+        } else {
+            match path_uri(Path::new(&f.name)) {
+                Some(u) => u,
+                None => continue,
+            }
+        };
+        out.push(Occurrence {
+            uri: file_uri,
+            range,
+            is_decl: s == decl,
+        });
+    }
+    Some(out)
+}

@@ -234,6 +234,62 @@ fn imports_are_followed() {
     assert_eq!(def["range"], range(1, 6, 1, 11));
 }
 
+/// Find references and rename across imports: `Latch` is declared in lib/latch.sc (line 1,
+/// `chart Latch {`: 6..11) and used in tests/components/dead_imported.sc (line 5,
+/// `  instance l: Latch;`: 14..19); both files are found from either occurrence.
+#[test]
+fn references_and_rename_follow_imports() {
+    let root = std::fs::canonicalize(concat!(env!("CARGO_MANIFEST_DIR"), "/../..")).unwrap();
+    let path = root.join("tests/components/dead_imported.sc");
+    let text = std::fs::read_to_string(&path).unwrap();
+    let uri = format!("file://{}", path.display());
+    let lib = format!(
+        "file://{}",
+        root.join("tests/components/lib/latch.sc").display()
+    );
+    let mut c = Client::start();
+    c.open_uri(&uri, &text);
+    let r = c.at_uri(
+        &uri,
+        "textDocument/references",
+        5,
+        16,
+        json!({ "context": { "includeDeclaration": true } }),
+    );
+    let found: Vec<(&Value, &Value)> = r
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|l| (&l["uri"], &l["range"]))
+        .collect();
+    assert_eq!(
+        found,
+        vec![
+            (&json!(uri), &range(5, 14, 5, 19)),
+            (&json!(lib), &range(1, 6, 1, 11))
+        ],
+        "{r}"
+    );
+    let r = c.at_uri(
+        &uri,
+        "textDocument/references",
+        5,
+        16,
+        json!({ "context": { "includeDeclaration": false } }),
+    );
+    assert_eq!(r.as_array().unwrap().len(), 1, "{r}");
+    let e = c.at_uri(
+        &uri,
+        "textDocument/rename",
+        5,
+        16,
+        json!({ "newName": "Flag" }),
+    );
+    assert_eq!(e["changes"][&uri][0]["range"], range(5, 14, 5, 19), "{e}");
+    assert_eq!(e["changes"][&lib][0]["range"], range(1, 6, 1, 11), "{e}");
+    assert_eq!(e["changes"][&lib][0]["newText"], json!("Flag"), "{e}");
+}
+
 #[test]
 fn find_references() {
     let mut c = Client::start();
