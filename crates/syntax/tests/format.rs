@@ -84,3 +84,18 @@ fn temporal_formulas_keep_their_grouping() {
         );
     }
 }
+
+/// A block comment over two lines, trailing a statement, with the next statement on the
+/// comment's last line. Formatting moves that statement to its own line; the line break
+/// inside the comment must not then count as a blank line before it, or a second run adds
+/// one (found by the `fmt` fuzz target on a mutated chart).
+#[test]
+fn a_trailing_comment_over_two_lines_is_formatted_once() {
+    let src =
+        "chart C {\n  initial A;\n  state A {\n    initial B;/* one\n  two*/ state B;\n  }\n}\n";
+    let once = check_preserved("trailing block comment", src);
+    assert!(
+        once.contains("initial B; /* one\n  two*/\n    state B;"),
+        "{once}"
+    );
+}

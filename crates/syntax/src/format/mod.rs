@@ -299,6 +299,9 @@ impl Printer<'_> {
                 let text = self.text(c).trim_end().to_string();
                 self.trailing.push(self.out.len());
                 self.out.push_str(&text);
+                // A blank line after it is looked for past the comment, whose own text may
+                // hold line breaks (a `/* … */` over several lines), not counted as blank.
+                self.last_end = self.last_end.max(c.end as usize);
             }
         }
         self.out.push('\n');
