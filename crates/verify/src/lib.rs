@@ -11,6 +11,7 @@ mod circuit;
 mod error;
 mod portfolio;
 mod priority;
+mod quick;
 mod schedule;
 mod single;
 mod temporal;
@@ -181,7 +182,7 @@ pub fn verify(
     let temporal = !program.temporal.is_empty() || !temporal.is_empty();
     let started = std::time::Instant::now();
     if opts.engine == Engine::Auto {
-        if let Some(run) = portfolio::quick_explicit(program, opts, events) {
+        if let Some(run) = quick::quick_race(program, opts, temporal, events) {
             return Ok(run);
         }
     }

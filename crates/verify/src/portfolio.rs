@@ -10,10 +10,8 @@
 //! depth (its shortest traces for all of them for the price of the deepest), then takes what
 //! is left (the built-ins) through the same passes.
 //!
-//! Before any of that ([`crate::verify`] calls it first, for temporal rows too), the explicit
-//! engine alone gets [`QUICK_STATES`] states and [`QUICK_TIME`]: a small model is explored
-//! completely in moments, and then its verdicts are the run's, without the cost of
-//! bit-blasting the model and starting the SAT engines (a larger one has lost only that).
+//! Before any of that, [`crate::verify`] runs the quick race of `quick.rs`: a small model is
+//! decided there in moments, without starting the whole portfolio.
 
 use crate::circuit::SYMBOLIC_RACE;
 use crate::priority::lower_priority;
@@ -33,12 +31,6 @@ use std::time::{Duration, Instant};
 
 /// How long the explicit engine and BMC have the cores to themselves.
 pub const HEAD_START: Duration = Duration::from_millis(300);
-
-/// How many states the explicit engine may store in auto's first, solitary pass.
-pub const QUICK_STATES: u64 = 1_000_000;
-
-/// How long auto's first pass may take.
-pub const QUICK_TIME: Duration = Duration::from_secs(1);
 
 /// How often the run checks the cancellation flag and the deadline while it waits.
 const POLL: Duration = Duration::from_millis(50);
@@ -303,70 +295,4 @@ fn bmc_all(w: &Work, events: &(dyn Fn(Event) + Sync), send: &mut dyn FnMut(usize
         &|i| Some(Arc::clone(&w.flags[i])),
         send,
     );
-}
-
-/// Auto's first pass: the explicit engine with at most [`QUICK_STATES`] states and
-/// [`QUICK_TIME`]. When it
-/// explores the whole state space, its verdicts (all definitive) are the run's; otherwise
-/// `None`, and the portfolio starts as if this pass had not run. Skipped when a depth bound is
-/// asked (a bounded exploration is not a complete one).
-pub(crate) fn quick_explicit(
-    p: &Program,
-    opts: &Options,
-    events: &(dyn Fn(Event) + Sync),
-) -> Option<Run> {
-    if opts.check.depth.is_some() {
-        return None;
-    }
-    let started = Instant::now();
-    let mut o = opts.check.clone();
-    o.max_states = Some(o.max_states.map_or(QUICK_STATES, |m| m.min(QUICK_STATES)));
-    o.timeout = Some(o.timeout.map_or(QUICK_TIME, |t| t.min(QUICK_TIME)));
-    if let Some(c) = &opts.cancel {
-        o.stop = Some(c.flag());
-    }
-    // The rows in report order, each found by name among the explicit engine's results.
-    let rows = crate::row_names(p, &opts.check.properties);
-    let report = statecheck_explicit::verify(p, &o, None).ok()?;
-    if report.stats.limit.is_some() {
-        return None;
-    }
-    let results = rows
-        .iter()
-        .map(|name| {
-            report
-                .results
-                .iter()
-                .find(|r| &r.name == name && r.verdict.is_definitive())
-                .cloned()
-        })
-        .collect::<Option<Vec<PropResult>>>()?;
-    let n = results.len();
-    let report = Report {
-        results,
-        stats: report.stats,
-    };
-    let time_s = started.elapsed().as_secs_f64();
-    let meta: Vec<Meta> = report
-        .results
-        .iter()
-        .map(|_| Meta {
-            engine: "explicit",
-            time_s: Some(time_s),
-            reason: None,
-            decided_at_s: Some(time_s),
-        })
-        .collect();
-    for (i, (r, m)) in report.results.iter().zip(&meta).enumerate() {
-        events(Event::Decided {
-            index: i,
-            result: r,
-            meta: m,
-        });
-    }
-    Some(Run {
-        invariants: vec![None; n],
-        report,
-        meta,
-    })
 }
