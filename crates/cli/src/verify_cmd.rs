@@ -98,6 +98,11 @@ pub struct VerifyArgs {
     /// No symmetry reduction (the default).
     #[arg(long)]
     no_symmetry: bool,
+    /// Step every input vector the assumes allow from each state, without the explicit
+    /// engine's input abstraction (docs/verification.md, "Input abstraction"): the same
+    /// states, verdicts, counterexamples and transition counts, more ticks run; for comparing.
+    #[arg(long)]
+    no_input_reduction: bool,
     /// How the explicit engine computes successors: `interpreter` (the IR's register code),
     /// `native` (the C step function compiled by the system's C compiler, cross-checked
     /// against the interpreter), or `auto` (native once a search runs longer than 0.3 s).
@@ -330,6 +335,7 @@ fn options(a: &VerifyArgs, max_memory: Option<u64>, timeout: Option<Duration>) -
         force: a.force,
         backend: a.backend.into(),
         compiler: Some(std::sync::Arc::new(statecheck_native::CCompiler)),
+        reduce_inputs: !a.no_input_reduction,
         ..Options::default()
     }
 }

@@ -114,10 +114,18 @@ fn stat(v: &Value, key: &str) -> u64 {
         .unwrap_or_else(|| panic!("stats.{key} in {v}"))
 }
 
-/// Run on 1 and 2 threads, and with native successors; the verdicts, depths and counts must
-/// be identical (and every counterexample of each run replays).
+/// Run on 1 and 2 threads, with native successors, and without the input abstraction
+/// (`--no-input-reduction`); the verdicts, depths and counts must be identical (and every
+/// counterexample of each run replays).
 fn both(file: &str, system: &str, extra: &[&str]) -> (i32, Value) {
     let (c1, v1) = verify(file, system, extra, "1");
+    let full_args: Vec<&str> = extra
+        .iter()
+        .copied()
+        .chain(["--no-input-reduction"])
+        .collect();
+    let (c0, v0) = verify(file, system, &full_args, "1");
+    assert_eq!(c0, c1, "exit code independent of the input abstraction");
     let (c2, v2) = verify(file, system, extra, "2");
     let native_args: Vec<&str> = extra
         .iter()
@@ -129,6 +137,10 @@ fn both(file: &str, system: &str, extra: &[&str]) -> (i32, Value) {
     assert_eq!(c2, c3, "exit code independent of the backend");
     assert_eq!(v3["stats"]["backend"], "native", "{}", v3["stats"]);
     for key in ["states", "transitions", "depth", "dead"] {
+        assert_eq!(
+            v0["stats"][key], v1["stats"][key],
+            "stats.{key} independent of the input abstraction"
+        );
         assert_eq!(
             v1["stats"][key], v2["stats"][key],
             "stats.{key} independent of threads"
@@ -154,6 +166,11 @@ fn both(file: &str, system: &str, extra: &[&str]) -> (i32, Value) {
             })
             .unwrap_or_default()
     };
+    assert_eq!(
+        strip(&v0),
+        strip(&v1),
+        "results independent of the input abstraction"
+    );
     assert_eq!(strip(&v1), strip(&v2), "results independent of threads");
     assert_eq!(strip(&v2), strip(&v3), "results independent of the backend");
     (c2, v2)

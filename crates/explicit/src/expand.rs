@@ -44,6 +44,8 @@ pub(crate) struct ChunkOut<K> {
     pub transitions: u64,
     /// Coverage counters, when enabled.
     pub coverage: Option<Vec<u64>>,
+    /// The current state's successors so far ([`push_successor`]).
+    dedup: Dedup,
 }
 
 /// Everything a worker needs to expand states; shared read-only by all threads.
@@ -262,17 +264,55 @@ impl Expander<'_> {
 }
 
 /// Record the successor `succ` of a tick.
+///
+/// Successors of one state are deduplicated here, before the visited set sees them: on
+/// models with wide input branching most input vectors of a state lead to a few successors
+/// (the inputs the tick does not read), and a repeat costs a random access into the table.
+/// Only a later duplicate from the same parent is dropped, and the visited set keeps the
+/// first candidate of a key in generation order anyway, so the states stored, their parents
+/// and inputs (hence counterexamples) are exactly those without the deduplication.
 #[inline(always)]
 pub(crate) fn push_successor<K: Key>(succ: K, t: &Tick<'_, K>, out: &mut ChunkOut<K>) {
     // A self-loop leads to a state already visited (the source): nothing to insert.
     if succ == *t.key {
         return;
     }
-    out.buckets[shard_of(succ.hash64())].push(Cand {
+    let h = succ.hash64();
+    let shard = shard_of(h);
+    let d = &mut out.dedup;
+    if d.parent != t.pos || d.pushed.len() >= DEDUP_MAX {
+        d.parent = t.pos;
+        d.pushed.clear();
+    }
+    for &(hh, at) in &d.pushed {
+        if hh == h
+            && out.buckets[shard]
+                .get(at as usize)
+                .is_some_and(|c| c.key == succ)
+        {
+            return;
+        }
+    }
+    let bucket = &mut out.buckets[shard];
+    if let Ok(at) = u32::try_from(bucket.len()) {
+        d.pushed.push((h, at));
+    }
+    bucket.push(Cand {
         key: succ,
         parent: t.pos,
         input: t.input,
     });
+}
+
+/// Most successors of one state remembered for deduplication (a state with more still has
+/// every successor inserted; later ones are compared against the first `DEDUP_MAX` only).
+const DEDUP_MAX: usize = 64;
+
+/// The successors pushed so far from the state being expanded: their hashes and positions
+/// in their shard's bucket.
+pub(crate) struct Dedup {
+    parent: u32,
+    pushed: Vec<(u64, u32)>,
 }
 
 impl<K> ChunkOut<K> {
@@ -287,6 +327,10 @@ impl<K> ChunkOut<K> {
             found: Vec::new(),
             transitions: 0,
             coverage: None,
+            dedup: Dedup {
+                parent: u32::MAX,
+                pushed: Vec::with_capacity(DEDUP_MAX),
+            },
         }
     }
 }
@@ -412,5 +456,45 @@ pub(crate) fn decides(m: &mut Machine, check: Check) -> bool {
         }),
         Check::Reach { target } => m.holds(target.code),
         Check::Builtin(_) => false,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn push(out: &mut ChunkOut<u32>, source: u32, pos: u32, input: u32, succ: u32) {
+        let t = Tick {
+            key: &source,
+            pos,
+            input,
+        };
+        push_successor(succ, &t, out);
+    }
+
+    fn all(out: &ChunkOut<u32>) -> Vec<(u32, u32, u32)> {
+        let mut v: Vec<_> = out
+            .buckets
+            .iter()
+            .flatten()
+            .map(|c| (c.key, c.parent, c.input))
+            .collect();
+        v.sort_unstable();
+        v
+    }
+
+    /// A repeat from the same state is dropped (the first input that reached it is kept), a
+    /// self-loop is never pushed, and the same successor from another state is kept (the
+    /// visited set decides between states).
+    #[test]
+    fn successors_of_one_state_are_pushed_once() {
+        let mut out = ChunkOut::with_room(2, 4);
+        push(&mut out, 1, 0, 0, 7);
+        push(&mut out, 1, 0, 1, 8);
+        push(&mut out, 1, 0, 2, 7);
+        push(&mut out, 1, 0, 3, 1);
+        push(&mut out, 2, 1, 0, 7);
+        push(&mut out, 2, 1, 1, 7);
+        assert_eq!(all(&out), vec![(7, 0, 0), (7, 1, 0), (8, 0, 1)]);
     }
 }
