@@ -9,7 +9,9 @@
 //! together, so that the misses overlap; the table grows by re-inserting in slot order.
 //! Successors are recorded in the order of exploration, which makes them a compact successor
 //! list (CSR) for free; the predecessor lists (4 bytes an edge, the event's controllability in
-//! the top bit) are built from it once by counting. Per state the fixpoint keeps one byte of
+//! the top bit) are built from it once by counting. Exploration is software-pipelined: a
+//! state's successors are looked up one state later, when their slots are in the cache.
+//! Per state the fixpoint keeps one byte of
 //! flags. Its first nonblocking step is a breadth-first backward search that reads ahead in
 //! its queue; each later one recomputes only the states that reach a state removed since.
 //! Guards are derived afterwards, only when asked ([`crate::guards`]).
@@ -300,6 +302,75 @@ const UNC: u32 = 1 << 31;
 /// the top bit).
 const MAX_STATES: usize = (1 << 31) - 2;
 
+/// One state's successors before they are looked up: packed keys, events and hashes.
+#[derive(Default)]
+struct Batch {
+    keys: Vec<u64>,
+    events: Vec<EventId>,
+    hashes: Vec<u64>,
+}
+
+/// The reachable product as it is explored: the store of packed states, the visited table
+/// and the successor lists so far.
+struct Explored {
+    words: usize,
+    store: Vec<u64>,
+    visited: Visited,
+    succ_off: Vec<u64>,
+    succ: Vec<(EventId, u32)>,
+    count: usize,
+}
+
+impl Explored {
+    /// Look up (and add) the successors of the next state in order; they become its
+    /// successor list.
+    fn add(&mut self, b: &Batch, budget: &Budget) -> Result<(), Error> {
+        let words = self.words;
+        for (j, (&e, &h)) in b.events.iter().zip(&b.hashes).enumerate() {
+            if self.count >= MAX_STATES {
+                return Err(self.too_many(budget));
+            }
+            let next = &b.keys[j * words..(j + 1) * words];
+            let (id, new) = self
+                .visited
+                .insert(&self.store, words, next, h, self.count as u32);
+            if new {
+                self.store.extend_from_slice(next);
+                self.count += 1;
+                self.visited.grow_if_needed(words, self.count);
+            }
+            self.succ.push((e, id));
+        }
+        self.succ_off.push(self.succ.len() as u64);
+        Ok(())
+    }
+
+    /// The engine's data so far: the store, the edges twice (successors of 8 bytes, then
+    /// predecessors of 4), the visited table and per state two offsets and a byte of flags.
+    fn bytes(&self) -> u64 {
+        self.store.len() as u64 * 8
+            + self.succ.len() as u64 * 12
+            + self.visited.bytes()
+            + self.count as u64 * 17
+    }
+
+    fn check(&self, budget: &Budget, phase: &'static str) -> Result<(), Error> {
+        budget.check(phase, self.count as f64, self.bytes())
+    }
+
+    /// State numbers are 31-bit: past that the engine stops as at a state limit.
+    fn too_many(&self, budget: &Budget) -> Error {
+        let partial = crate::error::Partial {
+            phase: "reachability",
+            states: self.count as f64,
+            seconds: budget.seconds(),
+            bytes: self.bytes(),
+        };
+        let limit = crate::error::Limit::States(self.count as u64);
+        Error::new(crate::error::ErrorKind::Limit { limit, partial })
+    }
+}
+
 /// Run the explicit engine within `budget`.
 pub fn run(p: &Problem, budget: &Budget) -> Result<Explicit, Error> {
     let pk = Packing::new(p);
@@ -314,31 +385,44 @@ pub fn run(p: &Problem, budget: &Budget) -> Result<Explicit, Error> {
                 .collect()
         })
         .collect();
-    let mut store: Vec<u64> = vec![0; words];
-    pk.pack(&p.initial(), &mut store[..words]);
-    let mut visited = Visited::new();
-    visited.insert(&store, words, &store[..words], hash(&store[..words]), 0);
-    let mut count = 1usize;
+    let mut x = Explored {
+        words,
+        store: vec![0; words],
+        visited: Visited::new(),
+        succ_off: vec![0],
+        succ: Vec::new(),
+        count: 1,
+    };
+    pk.pack(&p.initial(), &mut x.store[..words]);
+    let h0 = hash(&x.store[..words]);
+    x.visited.insert(&x.store, words, &x.store[..words], h0, 0);
     let mut flags: Vec<u8> = Vec::new();
-    let mut succ_off: Vec<u64> = vec![0];
-    let mut succ: Vec<(EventId, u32)> = Vec::new();
     let mut locs = vec![0u32; p.automata.len()];
     let mut key = vec![0u64; words];
     let (masks, ew) = plant_masks(p);
     let mut en = vec![0u64; ew];
-    // One state's successors before they are looked up: keys, events and hashes.
-    let mut nkeys: Vec<u64> = Vec::new();
-    let mut nev: Vec<EventId> = Vec::new();
-    let mut nh: Vec<u64> = Vec::new();
+    // Software pipelining: state i's successors are computed and their slots read while
+    // state i - 1's wait in `pending`; they are looked up one state later, when the slots are
+    // in the cache. A state not yet discovered first needs the pending look-ups.
+    let (mut cur, mut pending) = (Batch::default(), Batch::default());
+    let mut has_pending = false;
     let mut i = 0usize;
-    while i < count {
-        key.copy_from_slice(&store[i * words..(i + 1) * words]);
+    loop {
+        if i >= x.count {
+            if has_pending {
+                x.add(&pending, budget)?;
+                has_pending = false;
+                continue;
+            }
+            break;
+        }
+        key.copy_from_slice(&x.store[i * words..(i + 1) * words]);
         pk.unpack(&key, &mut locs);
         let mut is_bad = p.is_forbidden(&locs);
         let mut f = if p.is_marked(&locs) { MARKED } else { 0 };
-        nkeys.clear();
-        nev.clear();
-        nh.clear();
+        cur.keys.clear();
+        cur.events.clear();
+        cur.hashes.clear();
         if !is_bad {
             // The events every plant allows here (one AND per plant and mask word), then
             // only those are tried.
@@ -351,9 +435,9 @@ pub fn run(p: &Problem, budget: &Budget) -> Result<Explicit, Error> {
             }
             for e in EventBits::new(&en, n_ev) {
                 let (mut plant_ok, mut req_ok) = (true, true);
-                let at = nkeys.len();
-                nkeys.extend_from_slice(&key);
-                let next = &mut nkeys[at..];
+                let at = cur.keys.len();
+                cur.keys.extend_from_slice(&key);
+                let next = &mut cur.keys[at..];
                 for &(a, is_plant) in &parts[e] {
                     let aut = &p.automata[a];
                     let t = aut.next[locs[a] as usize * n_ev + e];
@@ -371,49 +455,47 @@ pub fn run(p: &Problem, budget: &Budget) -> Result<Explicit, Error> {
                     req_ok = needs_of[e].iter().all(|&k| p.needs[k].cond.eval(&locs));
                 }
                 if !plant_ok || !req_ok {
-                    nkeys.truncate(at);
+                    cur.keys.truncate(at);
                     if plant_ok && uncontrollable[e] {
                         is_bad = true;
                     }
                     continue;
                 }
-                nh.push(hash(&nkeys[at..]));
-                nev.push(e as EventId);
+                cur.hashes.push(hash(&cur.keys[at..]));
+                cur.events.push(e as EventId);
             }
-        }
-        // Touch every successor's slot first: the loads are independent, so their cache
-        // misses overlap, and the look-ups below find the slots in the cache.
-        visited.touch(&nh);
-        for (j, (&e, &h)) in nev.iter().zip(&nh).enumerate() {
-            if count >= MAX_STATES {
-                return Err(too_many(budget, count, &store, &succ, &visited));
-            }
-            let next = &nkeys[j * words..(j + 1) * words];
-            let (id, new) = visited.insert(&store, words, next, h, count as u32);
-            if new {
-                store.extend_from_slice(next);
-                count += 1;
-                visited.grow_if_needed(words, count);
-            }
-            succ.push((e, id));
         }
         if is_bad {
             f |= BAD;
         }
         flags.push(f);
-        succ_off.push(succ.len() as u64);
+        x.visited.touch(&cur.hashes);
+        if has_pending {
+            x.add(&pending, budget)?;
+        }
+        std::mem::swap(&mut cur, &mut pending);
+        has_pending = true;
         i += 1;
         if i.is_multiple_of(4096) {
-            check(budget, "reachability", count, &store, &succ, &visited)?;
+            x.check(budget, "reachability")?;
         }
     }
-    check(budget, "reachability", count, &store, &succ, &visited)?;
-    let n = count;
-    let g = Graph::new(n, &succ_off, &succ, &uncontrollable);
-    check(budget, "fixpoint", n, &store, &succ, &visited)?;
+    x.check(budget, "reachability")?;
+    let n = x.count;
+    // The estimate counts the predecessor lists already; the table goes before they come.
+    x.check(budget, "fixpoint")?;
+    let Explored {
+        store,
+        succ_off,
+        succ,
+        visited,
+        ..
+    } = x;
     drop(visited);
+    let g = Graph::new(n, &succ_off, &succ, &uncontrollable);
     let rounds = g.fixpoint(&mut flags, budget)?;
     g.restrict_to_reachable(&mut flags);
+    drop(g);
     Ok(Explicit {
         packing: pk,
         store,
@@ -647,41 +729,6 @@ impl<'a> Graph<'a> {
             }
         }
     }
-}
-
-/// The engine's data so far: the store, the edges twice (successors of 8 bytes, then
-/// predecessors of 4), the visited table and per state two offsets and a byte of flags.
-fn bytes(store: &[u64], succ: &[(EventId, u32)], visited: &Visited, count: usize) -> u64 {
-    store.len() as u64 * 8 + succ.len() as u64 * 12 + visited.bytes() + count as u64 * 17
-}
-
-fn check(
-    budget: &Budget,
-    phase: &'static str,
-    count: usize,
-    store: &[u64],
-    succ: &[(EventId, u32)],
-    visited: &Visited,
-) -> Result<(), Error> {
-    budget.check(phase, count as f64, bytes(store, succ, visited, count))
-}
-
-/// State numbers are 32-bit: past that the engine stops as at a state limit.
-fn too_many(
-    budget: &Budget,
-    count: usize,
-    store: &[u64],
-    succ: &[(EventId, u32)],
-    visited: &Visited,
-) -> Error {
-    let partial = crate::error::Partial {
-        phase: "reachability",
-        states: count as f64,
-        seconds: budget.seconds(),
-        bytes: bytes(store, succ, visited, count),
-    };
-    let limit = crate::error::Limit::States(count as u64);
-    Error::new(crate::error::ErrorKind::Limit { limit, partial })
 }
 
 impl Explicit {
