@@ -10,10 +10,10 @@
 //! Successors are recorded in the order of exploration, which makes them a compact successor
 //! list (CSR) for free; the predecessor lists (4 bytes an edge, the event's controllability in
 //! the top bit) are built from it once by counting. Exploration is software-pipelined: a
-//! state's successors are looked up one state later, when their slots are in the cache.
-//! Per state the fixpoint keeps one byte of
-//! flags. Its first nonblocking step is a breadth-first backward search that reads ahead in
-//! its queue; each later one recomputes only the states that reach a state removed since.
+//! state's successors are looked up one state later, when their slots are in the cache. Per
+//! state the fixpoint keeps one byte of flags. Its first nonblocking step is a breadth-first
+//! backward search that reads ahead in its queue; each later one recomputes only the states
+//! that reach a state removed since.
 //! Guards are derived afterwards, only when asked ([`crate::guards`]).
 
 use crate::error::Error;
