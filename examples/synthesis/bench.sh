@@ -65,6 +65,26 @@ simple() {
     printf '%-28s %-9s %s\n' "$1" simple-ref "${r:-did not finish in ${LIMIT} s}"
 }
 
+# compare LABEL FILE N: the explicit engine as the references run (no guards, no output
+# file), the simple Rust reference (while alive_simple is 1) and reference.py on
+# philosophers_N (while alive_reference is 1); ratios of CPU seconds in this run. Leaves the
+# references' CPU seconds in $SCPU and $RCPU ("" when not run or not finished in LIMIT s).
+compare() {
+    quiet "$1" explicit "$2"
+    SCPU= RCPU=
+    [ "${alive_simple:-1}" = 1 ] && simple "$1" "$2"
+    if [ "${alive_reference:-1}" = 1 ]; then
+        local t0 ref
+        t0=$(date +%s)
+        ref=$(timeout "$LIMIT" python3 examples/synthesis/reference.py philosophers "$3")
+        [ -n "$ref" ] && printf '%-28s %-9s %s\n' "$1" reference.py "$ref"
+        [ $(( $(date +%s) - t0 )) -lt "$LIMIT" ] &&
+            RCPU=$(echo "$ref" | sed -n 's/^reference \([0-9.]*\)s.*/\1/p')
+    fi
+    printf '%-28s %-9s explicit -q is %sx the simple Rust reference, %sx reference.py\n' \
+        "$1" ratio "$(ratio "$QCPU" "$SCPU")" "$(ratio "$QCPU" "$RCPU")"
+}
+
 # run LABEL ENGINE FILE [SYSTEM]: prints one line; returns 1 when the run hit the limit.
 run() {
     local label=$1 engine=$2 file=$3 sys=()
@@ -99,8 +119,8 @@ run() {
     return 0
 }
 
-# SECTIONS: which parts to run (default all): fixed, grown (philosophers and line), families,
-# bars (the issue's bars: auto on one instance of >= 10^6 states per family, line_16, symbolic
+# SECTIONS: which parts to run (default all but reference): fixed, grown (philosophers and
+# line), reference (only the philosophers against the references), families, bars (the issue's bars: auto on one instance of >= 10^6 states per family, line_16, symbolic
 # under 10^5 states).
 SECTIONS=${SECTIONS:-fixed grown families bars}
 echo "load average: $(cut -d' ' -f1-3 /proc/loadavg 2>/dev/null)"
@@ -121,7 +141,7 @@ fi
 if [[ " $SECTIONS " == *" grown "* ]]; then
 for family in philosophers line; do
     echo "== $family family (grown until an engine needs ${LIMIT} s)"
-    alive_explicit=1 alive_symbolic=1 alive_reference=1
+    alive_explicit=1 alive_symbolic=1 alive_reference=1 alive_simple=1
     n=4
     while [ $alive_explicit = 1 ] || [ $alive_symbolic = 1 ]; do
         f=$TMP/${family}_$n.sc
@@ -131,23 +151,33 @@ for family in philosophers line; do
             [ "${!var}" = 1 ] || continue
             run "${family}_$n" "$engine" "$f" || eval "$var=0"
         done
-        if [ "$family" = philosophers ] && [ $alive_reference = 1 ] && [ -n "$TIME" ]; then
-            # The explicit engine as the references run (no guards, no output file), the
-            # simple Rust reference and reference.py; ratios of CPU seconds in this run.
-            quiet "${family}_$n" explicit "$f"
-            simple "${family}_$n" "$f"
-            t0=$(date +%s)
-            ref=$(timeout "$LIMIT" python3 examples/synthesis/reference.py "$family" "$n")
-            [ -n "$ref" ] && printf '%-28s %-9s %s\n' "${family}_$n" reference.py "$ref"
-            rcpu=$(echo "$ref" | sed -n 's/^reference \([0-9.]*\)s.*/\1/p')
-            printf '%-28s %-9s explicit -q is %sx the simple Rust reference, %sx reference.py\n' \
-                "${family}_$n" ratio "$(ratio "$QCPU" "$SCPU")" "$(ratio "$QCPU" "$rcpu")"
-            [ -z "$ref" ] || [ $(( $(date +%s) - t0 )) -ge "$LIMIT" ] && alive_reference=0
+        if [ "$family" = philosophers ] && [ -n "$TIME" ] &&
+            { [ $alive_simple = 1 ] || [ $alive_reference = 1 ]; }; then
+            compare "${family}_$n" "$f" "$n"
+            [ -n "$SCPU" ] || alive_simple=0
+            [ -n "$RCPU" ] || alive_reference=0
         fi
         [ "$family" = line ] && [ "$n" -ge "${LINE_MAX:-16}" ] && break
         n=$((n + 1))
     done
 done
+fi
+
+# Only the references' comparison on the philosophers (SECTIONS=reference; not in the
+# default list, the grown section makes it too): n from REF_FROM (default 12) while the simple
+# Rust reference finishes within LIMIT.
+if [[ " $SECTIONS " == *" reference "* ]] && [ -n "$TIME" ]; then
+    echo "== the explicit engine against the references on the philosophers (n grown while the simple Rust reference finishes in ${LIMIT} s)"
+    alive_simple=1 alive_reference=1
+    n=${REF_FROM:-12}
+    while [ $alive_simple = 1 ]; do
+        f=$TMP/philosophers_$n.sc
+        "$GEN" philosophers "$n" "$f"
+        compare "philosophers_$n" "$f" "$n"
+        [ -n "$SCPU" ] || alive_simple=0
+        [ -n "$RCPU" ] || alive_reference=0
+        n=$((n + 1))
+    done
 fi
 
 # The (n, k) families of crates/synth/src/families/scaled.rs: k fixed per family (K_TL=…

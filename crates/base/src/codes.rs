@@ -148,6 +148,7 @@ pub const CODES: &[CodeInfo] = &[
     code("E0725", "Supremica XML: event both controllable and uncontrollable", "Events synchronise by label; every automaton must give a label the same controllability.", "synthesis.md"),
     code("E0726", "Supremica XML: automaton type", "Automata are `Plant`, `Specification` or `Supervisor` (synthesised against) or `Property` (skipped); the file needs at least one `Plant`.", "synthesis.md"),
     code("E0727", "Supremica XML export: requirement too large", "A state requirement over several automata is written as a product of copies of them; that product exceeds the export limit.", "synthesis.md"),
+    code("E0734", "synthesis: connection", "Events of a synthesis system synchronise by name; a `connect` (also one made by a component port that feeds several inner events) would not relabel an event, so it is refused.", "synthesis.md"),
     code("E0801", "scenario: bad repeat count", "A scenario line ends with `* N` where N is a whole number of at least 1.", "language.md"),
     code("E0802", "scenario: empty item", "Items of a scenario line are separated by single commas.", "language.md"),
     code("E0803", "scenario: unknown input", "The name is not a free input of the system: it is misspelt (the hint suggests the closest input), or it is computed or connected inside the system.", "language.md"),

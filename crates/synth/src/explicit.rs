@@ -4,10 +4,17 @@
 //!
 //! States are packed location vectors ([`Packing`]: one bit field per automaton, fields never
 //! straddle a 64-bit word) kept in one flat `Vec<u64>`; the visited set is an open-addressing
-//! table of 4-byte state numbers into that store. Successors are recorded in the order of
-//! exploration, which makes them a compact successor list (CSR) for free; the predecessor
-//! lists are built from it once by counting. The fixpoints are linear passes over those
-//! lists, and guards are derived afterwards, only when asked ([`crate::guards`]).
+//! table of state numbers into that store. The engine is memory-bound, so it is written
+//! around cache misses: a state's successors are computed first and their table slots read
+//! together, so that the misses overlap; the table grows by re-inserting in slot order.
+//! Successors are recorded in the order of exploration, which makes them a compact successor
+//! list (CSR) for free; the predecessor lists (4 bytes an edge, the event's controllability in
+//! the top bit) are built from it once by counting. Exploration is software-pipelined: a
+//! state's successors are looked up one state later, when their slots are in the cache. Per
+//! state the fixpoint keeps one byte of flags. Its first nonblocking step is a breadth-first
+//! backward search that reads ahead in its queue; each later one recomputes only the states
+//! that reach a state removed since.
+//! Guards are derived afterwards, only when asked ([`crate::guards`]).
 
 use crate::error::Error;
 use crate::limits::Budget;
@@ -96,20 +103,12 @@ pub struct Explicit {
 /// Open-addressing set of state numbers, keyed by the packed words in the store. Each slot
 /// also keeps a tag: the key itself when it is one word (no look into the store at all), else
 /// its hash (the store is read only when the tags agree). Tag and number share a slot, so a
-/// probe touches one cache line.
+/// probe touches one cache line. A slot holds the state number plus one, so that a free slot
+/// is all zeros and a new table is zeroed memory.
 struct Visited {
-    slots: Vec<Slot>,
+    slots: Vec<[u64; 2]>,
     mask: usize,
 }
-
-#[derive(Clone, Copy)]
-struct Slot {
-    tag: u64,
-    id: u32,
-}
-
-const EMPTY: u32 = u32::MAX;
-const FREE: Slot = Slot { tag: 0, id: EMPTY };
 
 #[inline]
 fn hash(key: &[u64]) -> u64 {
@@ -139,60 +138,76 @@ fn tag(key: &[u64], h: u64) -> u64 {
 impl Visited {
     fn new() -> Visited {
         Visited {
-            slots: vec![FREE; 1 << 12],
+            slots: vec![[0; 2]; 1 << 12],
             mask: (1 << 12) - 1,
         }
     }
 
-    /// The number of `key`, inserting it as `next` if new; `(number, inserted)`.
+    /// Read the first slot of each hash in `hs`: a prefetch written as plain loads.
     #[inline]
-    fn insert(&mut self, store: &[u64], words: usize, key: &[u64], next: u32) -> (u32, bool) {
-        let h = hash(key);
+    fn touch(&self, hs: &[u64]) {
+        let mut acc = 0u64;
+        for &h in hs {
+            acc ^= self.slots[h as usize & self.mask][1];
+        }
+        std::hint::black_box(acc);
+    }
+
+    /// The number of `key` (whose hash is `h`), inserting it as `next` if new;
+    /// `(number, inserted)`.
+    #[inline]
+    fn insert(
+        &mut self,
+        store: &[u64],
+        words: usize,
+        key: &[u64],
+        h: u64,
+        next: u32,
+    ) -> (u32, bool) {
         let t = tag(key, h);
         let mut i = h as usize & self.mask;
         loop {
-            let s = self.slots[i];
-            if s.id == EMPTY {
-                self.slots[i] = Slot { tag: t, id: next };
+            let [st, sid] = self.slots[i];
+            if sid == 0 {
+                self.slots[i] = [t, next as u64 + 1];
                 return (next, true);
             }
-            if s.tag == t {
-                if words == 1 {
-                    return (s.id, false);
-                }
-                let at = s.id as usize * words;
-                if &store[at..at + words] == key {
-                    return (s.id, false);
+            if st == t {
+                let id = sid as usize - 1;
+                if words == 1 || store[id * words..(id + 1) * words] == *key {
+                    return (id as u32, false);
                 }
             }
             i = (i + 1) & self.mask;
         }
     }
 
-    /// Double the table when it is more than half full (`count` states in it).
-    fn grow_if_needed(&mut self, store: &[u64], words: usize, count: usize) {
+    /// Double the table when it is more than half full (`count` states in it). The old
+    /// slots are re-inserted in slot order, so the writes go to two runs of the new table
+    /// (near `i` and `i` plus the old size) instead of everywhere; the hash comes from the
+    /// tag (`words` is the key length).
+    fn grow_if_needed(&mut self, words: usize, count: usize) {
         if count * 2 < self.slots.len() {
             return;
         }
         let n = self.slots.len() * 2;
-        self.slots = vec![FREE; n];
+        let old = std::mem::replace(&mut self.slots, vec![[0; 2]; n]);
         self.mask = n - 1;
-        for s in 0..count {
-            let key = &store[s * words..(s + 1) * words];
-            let h = hash(key);
+        for [t, id] in old {
+            if id == 0 {
+                continue;
+            }
+            let h = if words == 1 { hash(&[t]) } else { t };
             let mut i = h as usize & self.mask;
-            while self.slots[i].id != EMPTY {
+            while self.slots[i][1] != 0 {
                 i = (i + 1) & self.mask;
             }
-            self.slots[i] = Slot {
-                tag: tag(key, h),
-                id: s as u32,
-            };
+            self.slots[i] = [t, id];
         }
     }
 
     fn bytes(&self) -> u64 {
-        self.slots.len() as u64 * std::mem::size_of::<Slot>() as u64
+        self.slots.len() as u64 * 16
     }
 }
 
@@ -268,9 +283,93 @@ impl Iterator for EventBits<'_> {
     }
 }
 
-/// Sweeps over all states before the search for the states reachable through kept ones
-/// takes over (see [`run`]).
-const SWEEPS: usize = 3;
+/// Flags per state of the fixpoint, one byte each so that a look-up touches one byte.
+const BAD: u8 = 1;
+const MARKED: u8 = 2;
+/// Not (yet) removed by the fixpoint.
+const ALIVE: u8 = 4;
+/// Reaches a marked state through alive states (as of the last nonblocking step).
+const CO: u8 = 8;
+/// In the region the incremental nonblocking step recomputes.
+const REGION: u8 = 16;
+/// Kept in the supervisor: alive and reachable from the initial state through alive states.
+const KEPT: u8 = 32;
+
+/// The top bit of a predecessor entry: the edge's event is uncontrollable.
+const UNC: u32 = 1 << 31;
+
+/// Largest number of states: state numbers are 31-bit (the predecessor lists keep a flag in
+/// the top bit).
+const MAX_STATES: usize = (1 << 31) - 2;
+
+/// One state's successors before they are looked up: packed keys, events and hashes.
+#[derive(Default)]
+struct Batch {
+    keys: Vec<u64>,
+    events: Vec<EventId>,
+    hashes: Vec<u64>,
+}
+
+/// The reachable product as it is explored: the store of packed states, the visited table
+/// and the successor lists so far.
+struct Explored {
+    words: usize,
+    store: Vec<u64>,
+    visited: Visited,
+    succ_off: Vec<u64>,
+    succ: Vec<(EventId, u32)>,
+    count: usize,
+}
+
+impl Explored {
+    /// Look up (and add) the successors of the next state in order; they become its
+    /// successor list.
+    fn add(&mut self, b: &Batch, budget: &Budget) -> Result<(), Error> {
+        let words = self.words;
+        for (j, (&e, &h)) in b.events.iter().zip(&b.hashes).enumerate() {
+            if self.count >= MAX_STATES {
+                return Err(self.too_many(budget));
+            }
+            let next = &b.keys[j * words..(j + 1) * words];
+            let (id, new) = self
+                .visited
+                .insert(&self.store, words, next, h, self.count as u32);
+            if new {
+                self.store.extend_from_slice(next);
+                self.count += 1;
+                self.visited.grow_if_needed(words, self.count);
+            }
+            self.succ.push((e, id));
+        }
+        self.succ_off.push(self.succ.len() as u64);
+        Ok(())
+    }
+
+    /// The engine's data so far: the store, the edges twice (successors of 8 bytes, then
+    /// predecessors of 4), the visited table and per state two offsets and a byte of flags.
+    fn bytes(&self) -> u64 {
+        self.store.len() as u64 * 8
+            + self.succ.len() as u64 * 12
+            + self.visited.bytes()
+            + self.count as u64 * 17
+    }
+
+    fn check(&self, budget: &Budget, phase: &'static str) -> Result<(), Error> {
+        budget.check(phase, self.count as f64, self.bytes())
+    }
+
+    /// State numbers are 31-bit: past that the engine stops as at a state limit.
+    fn too_many(&self, budget: &Budget) -> Error {
+        let partial = crate::error::Partial {
+            phase: "reachability",
+            states: self.count as f64,
+            seconds: budget.seconds(),
+            bytes: self.bytes(),
+        };
+        let limit = crate::error::Limit::States(self.count as u64);
+        Error::new(crate::error::ErrorKind::Limit { limit, partial })
+    }
+}
 
 /// Run the explicit engine within `budget`.
 pub fn run(p: &Problem, budget: &Budget) -> Result<Explicit, Error> {
@@ -286,26 +385,44 @@ pub fn run(p: &Problem, budget: &Budget) -> Result<Explicit, Error> {
                 .collect()
         })
         .collect();
-    let mut store: Vec<u64> = vec![0; words];
-    pk.pack(&p.initial(), &mut store[..words]);
-    let mut visited = Visited::new();
-    visited.insert(&store, words, &store[..words], 0);
-    let mut count = 1usize;
-    let mut bad: Vec<bool> = Vec::new();
-    let mut marked: Vec<bool> = Vec::new();
-    let mut succ_off: Vec<u64> = vec![0];
-    let mut succ: Vec<(EventId, u32)> = Vec::new();
+    let mut x = Explored {
+        words,
+        store: vec![0; words],
+        visited: Visited::new(),
+        succ_off: vec![0],
+        succ: Vec::new(),
+        count: 1,
+    };
+    pk.pack(&p.initial(), &mut x.store[..words]);
+    let h0 = hash(&x.store[..words]);
+    x.visited.insert(&x.store, words, &x.store[..words], h0, 0);
+    let mut flags: Vec<u8> = Vec::new();
     let mut locs = vec![0u32; p.automata.len()];
     let mut key = vec![0u64; words];
-    let mut next = vec![0u64; words];
     let (masks, ew) = plant_masks(p);
     let mut en = vec![0u64; ew];
+    // Software pipelining: state i's successors are computed and their slots read while
+    // state i - 1's wait in `pending`; they are looked up one state later, when the slots are
+    // in the cache. A state not yet discovered first needs the pending look-ups.
+    let (mut cur, mut pending) = (Batch::default(), Batch::default());
+    let mut has_pending = false;
     let mut i = 0usize;
-    while i < count {
-        key.copy_from_slice(&store[i * words..(i + 1) * words]);
+    loop {
+        if i >= x.count {
+            if has_pending {
+                x.add(&pending, budget)?;
+                has_pending = false;
+                continue;
+            }
+            break;
+        }
+        key.copy_from_slice(&x.store[i * words..(i + 1) * words]);
         pk.unpack(&key, &mut locs);
         let mut is_bad = p.is_forbidden(&locs);
-        marked.push(p.is_marked(&locs));
+        let mut f = if p.is_marked(&locs) { MARKED } else { 0 };
+        cur.keys.clear();
+        cur.events.clear();
+        cur.hashes.clear();
         if !is_bad {
             // The events every plant allows here (one AND per plant and mask word), then
             // only those are tried.
@@ -318,7 +435,9 @@ pub fn run(p: &Problem, budget: &Budget) -> Result<Explicit, Error> {
             }
             for e in EventBits::new(&en, n_ev) {
                 let (mut plant_ok, mut req_ok) = (true, true);
-                next.copy_from_slice(&key);
+                let at = cur.keys.len();
+                cur.keys.extend_from_slice(&key);
+                let next = &mut cur.keys[at..];
                 for &(a, is_plant) in &parts[e] {
                     let aut = &p.automata[a];
                     let t = aut.next[locs[a] as usize * n_ev + e];
@@ -329,187 +448,287 @@ pub fn run(p: &Problem, budget: &Budget) -> Result<Explicit, Error> {
                         }
                         req_ok = false;
                     } else {
-                        pk.set(&mut next, a, t);
+                        pk.set(next, a, t);
                     }
                 }
-                if !plant_ok {
-                    continue;
-                }
-                if req_ok {
+                if plant_ok && req_ok {
                     req_ok = needs_of[e].iter().all(|&k| p.needs[k].cond.eval(&locs));
                 }
-                if !req_ok {
-                    if uncontrollable[e] {
+                if !plant_ok || !req_ok {
+                    cur.keys.truncate(at);
+                    if plant_ok && uncontrollable[e] {
                         is_bad = true;
                     }
                     continue;
                 }
-                if count >= u32::MAX as usize - 1 {
-                    return Err(too_many(budget, count, &store, &succ, &visited));
-                }
-                let (id, new) = visited.insert(&store, words, &next, count as u32);
-                if new {
-                    store.extend_from_slice(&next);
-                    count += 1;
-                    visited.grow_if_needed(&store, words, count);
-                }
-                succ.push((e as EventId, id));
+                cur.hashes.push(hash(&cur.keys[at..]));
+                cur.events.push(e as EventId);
             }
         }
-        bad.push(is_bad);
-        succ_off.push(succ.len() as u64);
+        if is_bad {
+            f |= BAD;
+        }
+        flags.push(f);
+        x.visited.touch(&cur.hashes);
+        if has_pending {
+            x.add(&pending, budget)?;
+        }
+        std::mem::swap(&mut cur, &mut pending);
+        has_pending = true;
         i += 1;
         if i.is_multiple_of(4096) {
-            check(budget, "reachability", count, &store, &succ, &visited)?;
+            x.check(budget, "reachability")?;
         }
     }
-    check(budget, "reachability", count, &store, &succ, &visited)?;
-    let n = count;
-    // Predecessor lists by counting.
-    let mut pred_off = vec![0u64; n + 1];
-    for &(_, t) in &succ {
-        pred_off[t as usize + 1] += 1;
-    }
-    for k in 0..n {
-        pred_off[k + 1] += pred_off[k];
-    }
-    let mut fill = pred_off.clone();
-    let mut pred: Vec<(EventId, u32)> = vec![(0, 0); succ.len()];
-    for s in 0..n {
-        for &(e, t) in &succ[succ_off[s] as usize..succ_off[s + 1] as usize] {
-            let at = &mut fill[t as usize];
-            pred[*at as usize] = (e, s as u32);
-            *at += 1;
-        }
-    }
-    drop(fill);
-    check(budget, "fixpoint", n, &store, &succ, &visited)?;
+    x.check(budget, "reachability")?;
+    let n = x.count;
+    // The estimate counts the predecessor lists already; the table goes before they come.
+    x.check(budget, "fixpoint")?;
+    let Explored {
+        store,
+        succ_off,
+        succ,
+        visited,
+        ..
+    } = x;
     drop(visited);
-    let preds = |t: usize| &pred[pred_off[t] as usize..pred_off[t + 1] as usize];
-    let succs = |s: usize| &succ[succ_off[s] as usize..succ_off[s + 1] as usize];
-    let mut alive: Vec<bool> = bad.iter().map(|b| !b).collect();
-    let mut work: Vec<u32> = (0..n as u32).filter(|&s| bad[s as usize]).collect();
-    let mut rounds = 0;
-    let mut stack: Vec<u32> = Vec::new();
-    let mut coreach = vec![false; n];
-    loop {
-        rounds += 1;
-        // Controllability: a state with an uncontrollable edge into a removed state goes too.
-        while let Some(t) = work.pop() {
-            for &(e, s) in preds(t as usize) {
-                if alive[s as usize] && uncontrollable[e as usize] {
-                    alive[s as usize] = false;
-                    work.push(s);
-                }
-            }
-        }
-        // Nonblocking: keep only states that reach a marked state through kept states.
-        // (Sweeps in state order, as for reachability below, do not settle here: on the
-        // philosophers a path back to the marked initial state first goes deeper.)
-        coreach.fill(false);
-        stack.clear();
-        for s in 0..n {
-            if alive[s] && marked[s] {
-                coreach[s] = true;
-                stack.push(s as u32);
-            }
-        }
-        while let Some(t) = stack.pop() {
-            for &(_, s) in preds(t as usize) {
-                if alive[s as usize] && !coreach[s as usize] {
-                    coreach[s as usize] = true;
-                    stack.push(s);
-                }
-            }
-        }
-        for s in 0..n {
-            if alive[s] && !coreach[s] {
-                alive[s] = false;
-                work.push(s as u32);
-            }
-        }
-        budget.check("fixpoint", n as f64, 0)?;
-        if work.is_empty() {
-            break;
-        }
-    }
-    // Restrict to what is reachable from the initial state through kept states: sweeps in
-    // state order (exploration order, so a state's first predecessor comes before it), then
-    // a search from the states the last sweep found, if they have not settled.
-    let mut kept = vec![false; n];
-    if alive[0] {
-        kept[0] = true;
-        stack.clear();
-        stack.push(0);
-        for _ in 0..SWEEPS {
-            stack.clear();
-            for s in 0..n {
-                if kept[s] {
-                    for &(_, t) in succs(s) {
-                        if alive[t as usize] && !kept[t as usize] {
-                            kept[t as usize] = true;
-                            stack.push(t);
-                        }
-                    }
-                }
-            }
-            if stack.is_empty() {
-                break;
-            }
-        }
-        while let Some(s) = stack.pop() {
-            for &(_, t) in succs(s as usize) {
-                if alive[t as usize] && !kept[t as usize] {
-                    kept[t as usize] = true;
-                    stack.push(t);
-                }
-            }
-        }
-    }
+    let g = Graph::new(n, &succ_off, &succ, &uncontrollable);
+    let rounds = g.fixpoint(&mut flags, budget)?;
+    g.restrict_to_reachable(&mut flags);
+    drop(g);
     Ok(Explicit {
         packing: pk,
         store,
         succ_off,
         succ,
-        kept,
+        kept: flags.iter().map(|f| f & KEPT != 0).collect(),
         product_states: n,
         rounds,
     })
 }
 
-/// The engine's data so far: the store, the edges twice (successors, then predecessors),
-/// the visited table and per state two offsets and five flags.
-fn bytes(store: &[u64], succ: &[(EventId, u32)], visited: &Visited, count: usize) -> u64 {
-    store.len() as u64 * 8 + succ.len() as u64 * 16 + visited.bytes() + count as u64 * 21
+/// The transition graph of the reachable product: successor lists as explored, predecessor
+/// lists built from them once by counting (31-bit state numbers with the [`UNC`] flag).
+struct Graph<'a> {
+    succ_off: &'a [u64],
+    succ: &'a [(EventId, u32)],
+    pred_off: Vec<u64>,
+    pred: Vec<u32>,
 }
 
-fn check(
-    budget: &Budget,
-    phase: &'static str,
-    count: usize,
-    store: &[u64],
-    succ: &[(EventId, u32)],
-    visited: &Visited,
-) -> Result<(), Error> {
-    budget.check(phase, count as f64, bytes(store, succ, visited, count))
-}
+impl<'a> Graph<'a> {
+    fn new(
+        n: usize,
+        succ_off: &'a [u64],
+        succ: &'a [(EventId, u32)],
+        uncontrollable: &[bool],
+    ) -> Graph<'a> {
+        let mut pred_off = vec![0u64; n + 1];
+        for &(_, t) in succ {
+            pred_off[t as usize + 1] += 1;
+        }
+        for k in 0..n {
+            pred_off[k + 1] += pred_off[k];
+        }
+        let mut fill = pred_off.clone();
+        let mut pred: Vec<u32> = vec![0; succ.len()];
+        for s in 0..n {
+            for &(e, t) in &succ[succ_off[s] as usize..succ_off[s + 1] as usize] {
+                let at = &mut fill[t as usize];
+                pred[*at as usize] = s as u32 | if uncontrollable[e as usize] { UNC } else { 0 };
+                *at += 1;
+            }
+        }
+        Graph {
+            succ_off,
+            succ,
+            pred_off,
+            pred,
+        }
+    }
 
-/// State numbers are 32-bit: past that the engine stops as at a state limit.
-fn too_many(
-    budget: &Budget,
-    count: usize,
-    store: &[u64],
-    succ: &[(EventId, u32)],
-    visited: &Visited,
-) -> Error {
-    let partial = crate::error::Partial {
-        phase: "reachability",
-        states: count as f64,
-        seconds: budget.seconds(),
-        bytes: bytes(store, succ, visited, count),
-    };
-    let limit = crate::error::Limit::States(count as u64);
-    Error::new(crate::error::ErrorKind::Limit { limit, partial })
+    #[inline]
+    fn preds(&self, t: usize) -> &[u32] {
+        &self.pred[self.pred_off[t] as usize..self.pred_off[t + 1] as usize]
+    }
+
+    #[inline]
+    fn succs(&self, s: usize) -> &[(EventId, u32)] {
+        &self.succ[self.succ_off[s] as usize..self.succ_off[s + 1] as usize]
+    }
+
+    /// The classic fixpoint over `flags` (sets [`ALIVE`] on the states it keeps); the number
+    /// of rounds. The first nonblocking step is a backward search from every marked state;
+    /// each later one recomputes only the region that reaches a state removed since (the
+    /// others keep their path to a marked state), which is empty when controllability
+    /// removed nothing.
+    fn fixpoint(&self, flags: &mut [u8], budget: &Budget) -> Result<usize, Error> {
+        let n = flags.len();
+        let mut work: Vec<u32> = Vec::new();
+        for (s, f) in flags.iter_mut().enumerate() {
+            if *f & BAD != 0 {
+                work.push(s as u32);
+            } else {
+                *f |= ALIVE;
+            }
+        }
+        let mut stack: Vec<u32> = Vec::new();
+        let mut removed: Vec<u32> = Vec::new();
+        let mut rounds = 0;
+        loop {
+            rounds += 1;
+            // Controllability: a state with an uncontrollable edge into a removed state goes
+            // too.
+            removed.clear();
+            while let Some(t) = work.pop() {
+                for &ps in self.preds(t as usize) {
+                    let s = (ps & !UNC) as usize;
+                    if ps & UNC != 0 && flags[s] & ALIVE != 0 {
+                        flags[s] &= !(ALIVE | CO);
+                        work.push(s as u32);
+                        removed.push(s as u32);
+                    }
+                }
+            }
+            // Nonblocking: keep only states that reach a marked state through kept states.
+            // (Sweeps in state order, as for reachability below, do not settle here: on the
+            // philosophers a path back to the marked initial state first goes deeper.)
+            if rounds == 1 {
+                stack.clear();
+                for (s, f) in flags.iter_mut().enumerate() {
+                    if *f & (ALIVE | MARKED) == ALIVE | MARKED {
+                        *f |= CO;
+                        stack.push(s as u32);
+                    }
+                }
+                self.backward(flags, &mut stack, ALIVE);
+                for (s, f) in flags.iter_mut().enumerate() {
+                    if *f & (ALIVE | CO) == ALIVE {
+                        *f &= !ALIVE;
+                        work.push(s as u32);
+                    }
+                }
+            } else if !removed.is_empty() {
+                self.recompute(flags, &removed, &mut stack, &mut work);
+            }
+            budget.check("fixpoint", n as f64, 0)?;
+            if work.is_empty() {
+                break;
+            }
+        }
+        Ok(rounds)
+    }
+
+    /// Breadth-first backward search from `queue` over predecessors whose flags contain
+    /// `within`, setting [`CO`]; empties `queue`. The entries a few places ahead in the queue
+    /// have their offsets and first predecessors read early (a prefetch written as plain
+    /// loads), so the cache misses of several states overlap.
+    fn backward(&self, flags: &mut [u8], queue: &mut Vec<u32>, within: u8) {
+        let mut head = 0;
+        let mut acc = 0u64;
+        while head < queue.len() {
+            if let Some(&a) = queue.get(head + 16) {
+                acc ^= self.pred_off[a as usize];
+            }
+            if let Some(&b) = queue.get(head + 8) {
+                let at = self.pred_off[b as usize] as usize;
+                acc ^= self.pred.get(at).copied().unwrap_or(0) as u64;
+            }
+            let t = queue[head] as usize;
+            head += 1;
+            for &ps in self.preds(t) {
+                let s = (ps & !UNC) as usize;
+                if flags[s] & (within | CO) == within {
+                    flags[s] |= CO;
+                    queue.push(s as u32);
+                }
+            }
+        }
+        std::hint::black_box(acc);
+        queue.clear();
+    }
+
+    /// A later nonblocking step: the alive states that reach a state of `removed` through
+    /// alive states lose [`CO`]; among them, the marked ones and those with an edge to a
+    /// state that kept it get it back, and so does every state of the region that reaches
+    /// those; the rest are removed (pushed on `work`). Every other alive state kept its
+    /// path to a marked state: a path through a removed state would put it in the region.
+    fn recompute(
+        &self,
+        flags: &mut [u8],
+        removed: &[u32],
+        stack: &mut Vec<u32>,
+        work: &mut Vec<u32>,
+    ) {
+        let mut region: Vec<u32> = Vec::new();
+        stack.clear();
+        stack.extend_from_slice(removed);
+        while let Some(t) = stack.pop() {
+            for &ps in self.preds(t as usize) {
+                let s = (ps & !UNC) as usize;
+                if flags[s] & (ALIVE | REGION) == ALIVE {
+                    flags[s] = (flags[s] | REGION) & !CO;
+                    region.push(s as u32);
+                    stack.push(s as u32);
+                }
+            }
+        }
+        for &s in &region {
+            let s = s as usize;
+            let seed = flags[s] & MARKED != 0
+                || self
+                    .succs(s)
+                    .iter()
+                    .any(|&(_, t)| flags[t as usize] & (ALIVE | CO) == ALIVE | CO);
+            if seed {
+                flags[s] |= CO;
+                stack.push(s as u32);
+            }
+        }
+        self.backward(flags, stack, ALIVE | REGION);
+        for &s in &region {
+            let f = &mut flags[s as usize];
+            *f &= !REGION;
+            if *f & CO == 0 {
+                *f &= !ALIVE;
+                work.push(s);
+            }
+        }
+    }
+
+    /// Set [`KEPT`] on the alive states reachable from the initial one through alive states:
+    /// one sweep in state order (exploration order, so most edges lead forward, to a state
+    /// the sweep has not passed yet), then a search from the states an edge back reached.
+    fn restrict_to_reachable(&self, flags: &mut [u8]) {
+        if flags.first().is_none_or(|f| f & ALIVE == 0) {
+            return;
+        }
+        flags[0] |= KEPT;
+        let mut stack: Vec<u32> = Vec::new();
+        for s in 0..flags.len() {
+            if flags[s] & KEPT == 0 {
+                continue;
+            }
+            for &(_, t) in self.succs(s) {
+                let ft = &mut flags[t as usize];
+                if *ft & (ALIVE | KEPT) == ALIVE {
+                    *ft |= KEPT;
+                    if (t as usize) < s {
+                        stack.push(t);
+                    }
+                }
+            }
+        }
+        while let Some(s) = stack.pop() {
+            for &(_, t) in self.succs(s as usize) {
+                let ft = &mut flags[t as usize];
+                if *ft & (ALIVE | KEPT) == ALIVE {
+                    *ft |= KEPT;
+                    stack.push(t);
+                }
+            }
+        }
+    }
 }
 
 impl Explicit {

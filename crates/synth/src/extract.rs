@@ -1,8 +1,9 @@
 //! From a checked `system` of `plant`/`requirement` charts to a [`Problem`].
 //!
 //! Synthesis reads the checked model (names resolved once, by the checker), never the syntax
-//! tree. The rules (reported as diagnostics `E0701`–`E0712`, all at once): every instance is a
-//! single (non-array) instance of a `plant chart` or `requirement chart`; such a chart
+//! tree. The rules (reported as diagnostics `E0701`–`E0712` and `E0734`, all at once): every
+//! instance is a single (non-array) instance of a `plant chart` or `requirement chart`, and the
+//! system has no connections (events synchronise by name); such a chart
 //! declares only `controllable event`/`uncontrollable event`s, is flat (states without
 //! children), has one `initial` state, and its transitions are `on EVENT -> STATE;` with no
 //! guard, action or priority; it is deterministic; an event has the same controllability
@@ -141,6 +142,21 @@ pub fn extract(model: &Model, system: &System) -> Result<Problem, Vec<Diagnostic
             }
         }
         inst_charts.push((i as u32, &inst.name, chart, kind));
+    }
+    // Connections do not relabel events (they synchronise by name); a connection would be
+    // silently ignored, so it is refused. After the flattening, a component's input port
+    // that feeds several inner events is such a connection.
+    for c in &system.connections {
+        cx.diags.push(
+            Diagnostic::error(
+                "E0734",
+                "connections are not used in synthesis systems: events synchronise by name",
+                c.span,
+            )
+            .with_hint(
+                "declare the event under the same name in every chart that shares it; a chart type cannot be instantiated with renamed events",
+            ),
+        );
     }
     // Pass 2: automata, and which instance each one is.
     let n_events = cx.events.len();

@@ -236,3 +236,34 @@ fn scaled_families_match_the_reference() {
         "reference disagrees with the hand derivation"
     );
 }
+
+#[test]
+fn removals_cascade_over_three_rounds() {
+    // Derived by hand, one round at a time (the explicit engine recomputes nonblocking
+    // incrementally after the first round, so this walks that path twice):
+    // round 1: `Dead` reaches no marked state and goes; round 2: `B` has the uncontrollable
+    // `u1` into `Dead` and goes, then `Z` (whose only way on was `B`) blocks and goes;
+    // round 3: `W` has the uncontrollable `u2` into `Z` and goes; `S0` (marked) and `E` stay.
+    // Supervisor: {S0, E} with `c6` and `u3`: 2 states, 2 transitions.
+    let text = "
+plant chart P {
+    controllable event c1; controllable event c2; controllable event c3;
+    controllable event c4; controllable event c5; controllable event c6;
+    uncontrollable event u1; uncontrollable event u2; uncontrollable event u3;
+    initial S0;
+    marked state S0 { on c1 -> Z; on c2 -> W; on c6 -> E; }
+    state Z { on c3 -> B; }
+    state B { on u1 -> Dead; on c4 -> S0; }
+    state Dead { }
+    state W { on u2 -> Z; on c5 -> S0; }
+    state E { on u3 -> S0; }
+}
+system Cascade { instance p: P; }
+";
+    let p = problem_of(text, None);
+    assert_eq!(both(&p), (2, 2));
+    let x =
+        statecheck_synth::explicit::run(&p, &statecheck_synth::Budget::new(&Default::default()))
+            .expect("explicit");
+    assert_eq!((x.product_states, x.rounds), (6, 3));
+}

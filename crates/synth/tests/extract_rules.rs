@@ -77,7 +77,7 @@ system S {{
 
 #[test]
 fn each_rule_is_reported_with_its_code() {
-    let cases: [(&str, &str); 9] = [
+    let cases: [(&str, &str); 10] = [
         // An instance array.
         ("system S { instance m[2]: Machine; }", "E0701"),
         // An ordinary chart.
@@ -123,6 +123,15 @@ system S { instance p: P; }",
             "plant chart P { controllable event e; initial A; state A { on e [true] -> A; } }
 system S { instance p: P; }",
             "E0710",
+        ),
+        // A component port feeding two inner events of different names: after flattening a
+        // connection from `x.a.take` to `x.b.grab`, which would not make them one event.
+        (
+            "plant chart P { controllable event take; initial A; state A { on take -> A; } }
+plant chart Q { controllable event grab; initial A; state A { on grab -> A; } }
+component Pair { input event go; instance a: P; instance b: Q; connect go -> a.take; connect go -> b.grab; }
+system S { instance x: Pair; }",
+            "E0734",
         ),
     ];
     for (text, code) in cases {
