@@ -65,7 +65,13 @@ pub struct Reductions {
     /// Per bad output of the shared problem's reduction: the frames of IC3's last attempt on
     /// it that a limit stopped, from which its next attempt resumes.
     ic3_frames: Mutex<HashMap<usize, Ic3Frames>>,
+    /// Per property: its retimed problem and what localization has refined on it
+    /// ([`crate::localize::cegar_reducing`]), kept between attempts.
+    retimed: Mutex<HashMap<usize, Retimed>>,
 }
+
+/// A property's retimed problem and localization's progress on it.
+type Retimed = (Arc<Aig>, crate::localize::Progress);
 
 /// The most lemma clauses kept for later proofs (beyond it, new invariants are not added:
 /// every frame of every later IC3 run carries them).
@@ -79,7 +85,46 @@ impl Reductions {
             shared: OnceLock::new(),
             lemmas: Mutex::new(Vec::new()),
             ic3_frames: Mutex::new(HashMap::new()),
+            retimed: Mutex::new(HashMap::new()),
         }
+    }
+
+    /// Localization on property `prop`'s retimed problem ([`Blasted::retimed_problem`]),
+    /// resumed from its last attempt; `None` when the property has no retimed form. The
+    /// answer is read on the original problem: a counterexample loses the retimed problem's
+    /// last frame; a proof is believed only when its invariant checks on the retimed problem
+    /// (no certificate of the original problem is returned: the invariant is about the
+    /// retimed one).
+    fn cegar_retimed(&self, bl: &Blasted, prop: usize, limits: &Limits) -> Option<Outcome> {
+        let taken = self
+            .retimed
+            .lock()
+            .unwrap_or_else(|e| e.into_inner())
+            .remove(&prop);
+        let (aig, mut progress) = match taken {
+            Some(x) => x,
+            None => (Arc::new(bl.retimed_problem(prop)?.0), Default::default()),
+        };
+        let (out, _) = crate::sat::with_limits(limits, || {
+            crate::localize::cegar_reducing(&aig, limits, &mut progress)
+        });
+        let out = match out {
+            Outcome::Reached(t) => Outcome::Reached(crate::blast::retimed_trace(t)),
+            Outcome::Proved(Some(inv)) => match crate::cert::check(&aig, &inv) {
+                Ok(()) => Outcome::Proved(None),
+                Err(e) => {
+                    Outcome::Unknown(format!("the localization invariant does not check: {e}"))
+                }
+            },
+            out => out,
+        };
+        if matches!(out, Outcome::Unknown(_)) {
+            self.retimed
+                .lock()
+                .unwrap_or_else(|e| e.into_inner())
+                .insert(prop, (aig, progress));
+        }
+        Some(out)
     }
 
     /// Whether problem `i`'s reduction is computed (and useful): then the engines go to it
@@ -276,6 +321,11 @@ fn run_property(
             out => (out, None),
         };
     };
+    if engine == Engine::Cegar {
+        if let Some(out) = reductions.cegar_retimed(bl, prop, limits) {
+            return (out, None);
+        }
+    }
     let aig = shared.with_bad(k);
     let ready = reductions.shared_ready();
     match run_with(engine, &aig, limits, ready, Some((reductions, k)), || {
