@@ -175,6 +175,18 @@ fn the_engines_path_agrees_with_ic3_and_bmc_on_the_original_problem() {
             let (c, i3) = (by(Engine::Cegar), by(Engine::Ic3));
             let name = &bl.props[pi].name;
             assert_eq!(c.result.verdict, i3.result.verdict, "{system}: {name}");
+            // A proof's certificate is about the original problem (`--check-certificate`
+            // reads that one) and checks there.
+            if let Some((aig, inv)) = &c.invariant {
+                assert_eq!(aig.latches.len(), bl.problem(pi).latches.len());
+                assert!(
+                    statecheck_symbolic::cert::check(aig, inv).is_ok(),
+                    "{system}: {name}"
+                );
+            }
+            if c.result.verdict == Verdict::Proved {
+                assert!(c.invariant.is_some(), "{system}: {name}: a certificate");
+            }
             if c.result.verdict == Verdict::Violated {
                 let b = by(Engine::Bmc);
                 assert_eq!(c.result.depth, b.result.depth, "{system}: {name}");
