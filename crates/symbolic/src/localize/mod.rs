@@ -112,6 +112,9 @@ fn run(
     let cut = concrete::cuttable(aig);
     let mut conc = Concrete::new(aig, &cut);
     debug_assert_eq!(cut.bad.first(), Some(&bad));
+    // The attempt's limits, its budget extended by the time spent reducing abstractions.
+    let mut lim = limits.clone();
+    let limits = &mut lim;
     loop {
         let abs = Abstraction::new(aig, &keep);
         st.kept = abs.aig.latches.len();
@@ -136,7 +139,8 @@ fn run(
             }
             Outcome::Reached(t) => {
                 let k = t.inputs.len().saturating_sub(1);
-                match conc.check(k, limits) {
+                let checked = crate::sat::with_limits(limits, || conc.check(k, limits));
+                match checked {
                     Check::Real(trace) => {
                         if crate::scorr::replays(aig, &trace) {
                             return (Outcome::Reached(trace), st);
@@ -197,15 +201,23 @@ fn stopped(progress: &mut Progress, keep: Vec<bool>, st: Stats, out: Outcome) ->
 fn prove_reduced(
     abs: &Abstraction,
     keep: &[bool],
-    limits: &Limits,
+    limits: &mut Limits,
     progress: &mut Progress,
     st: &mut Stats,
 ) -> Outcome {
     if progress.reduced_for != keep {
         let t = Instant::now();
-        // Computed to the run's end, not the attempt's: it is kept for later attempts.
-        let red = crate::scorr::reduce(&abs.aig, &limits.for_run());
+        // Computed to the run's end, not the attempt's (its SAT calls too): it is kept for
+        // later attempts.
+        let run = limits.for_run();
+        let red = crate::sat::with_limits(&run, || crate::scorr::reduce(&abs.aig, &run));
         st.reduce_time += t.elapsed();
+        // The attempt's budget counts from when the reduction is there (as for the whole
+        // circuit's, `crate::check`), or an attempt that pays for one would end at once.
+        if let Some(d) = limits.attempt_deadline {
+            let later = d + t.elapsed();
+            limits.attempt_deadline = Some(limits.deadline.map_or(later, |r| r.min(later)));
+        }
         match red {
             Ok(r) => {
                 progress.reduction = Some(Arc::new(r));
@@ -225,11 +237,14 @@ fn prove_reduced(
         return crate::ic3::ic3(&abs.aig, limits);
     };
     st.reduced = red.aig.latches.len();
-    let out = crate::ic3::ic3_resume(&red.aig, limits, &Vec::new(), &mut progress.frames);
-    match red.lift(&abs.aig, out) {
-        Outcome::Unknown(why) if why == SPURIOUS => crate::ic3::ic3(&abs.aig, limits),
-        out => out,
-    }
+    let limits = &*limits;
+    crate::sat::with_limits(limits, || {
+        let out = crate::ic3::ic3_resume(&red.aig, limits, &Vec::new(), &mut progress.frames);
+        match red.lift(&abs.aig, out) {
+            Outcome::Unknown(why) if why == SPURIOUS => crate::ic3::ic3(&abs.aig, limits),
+            out => out,
+        }
+    })
 }
 
 /// The clauses of `lemmas` (over concrete latches) that mention only kept latches, over the
