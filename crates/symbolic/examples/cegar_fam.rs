@@ -16,6 +16,10 @@ fn main() {
     // `--blasted`: localize the circuit as blasted instead of its reduction.
     let blasted = args.iter().any(|a| a == "--blasted");
     args.retain(|a| a != "--blasted");
+    // `--retimed`: localize each property's retimed problem, reducing each abstraction (what
+    // `--engine cegar` does), instead of the whole circuit's reduction.
+    let retimed = args.iter().any(|a| a == "--retimed");
+    args.retain(|a| a != "--retimed");
     let Some(file) = args.first().cloned() else {
         eprintln!("usage: cegar_fam FILE [PROPERTY...] [--timeout S]");
         std::process::exit(2);
@@ -47,6 +51,36 @@ fn main() {
         bl.props.len(),
         shared.aig.latches.len()
     );
+    if retimed {
+        for (i, prop) in bl.props.iter().enumerate() {
+            if !wanted.is_empty() && !wanted.contains(&prop.name) {
+                continue;
+            }
+            let Some((g, _)) = bl.retimed_problem(i) else {
+                continue;
+            };
+            let lim = Limits {
+                deadline: Some(Instant::now() + Duration::from_secs(timeout)),
+                ..Limits::default()
+            };
+            let t = Instant::now();
+            let mut progress = Default::default();
+            let (out, st) = statecheck_symbolic::localize::cegar_reducing(&g, &lim, &mut progress);
+            println!(
+                "{:45} {:25} {:6.1} s  kept {}/{} (reduced {}, reductions {:.1} s)  refinements {} depths {:?}",
+                prop.name,
+                verdict(out),
+                t.elapsed().as_secs_f64(),
+                st.kept,
+                st.latches,
+                st.reduced,
+                st.reduce_time.as_secs_f64(),
+                st.refinements,
+                st.depths
+            );
+        }
+        return;
+    }
     let t = Instant::now();
     let lim = Limits::default();
     let red = if blasted {
@@ -83,12 +117,7 @@ fn main() {
         };
         let t = Instant::now();
         let (out, st) = statecheck_symbolic::localize::cegar_with_lemmas(&g, &lim, &Vec::new());
-        let verdict = match out {
-            Outcome::Proved(_) => "proved".to_string(),
-            Outcome::Reached(t) => format!("reached at {} frames", t.inputs.len()),
-            Outcome::Bounded(k) => format!("bounded {k}"),
-            Outcome::Unknown(w) => format!("unknown ({w})"),
-        };
+        let verdict = verdict(out);
         println!(
             "{:45} {:25} {:6.1} s  kept {}/{}  refinements {} depths {:?}",
             prop.name,
@@ -99,5 +128,14 @@ fn main() {
             st.refinements,
             st.depths
         );
+    }
+}
+
+fn verdict(out: Outcome) -> String {
+    match out {
+        Outcome::Proved(_) => "proved".to_string(),
+        Outcome::Reached(t) => format!("reached at {} frames", t.inputs.len()),
+        Outcome::Bounded(k) => format!("bounded {k}"),
+        Outcome::Unknown(w) => format!("unknown ({w})"),
     }
 }

@@ -65,7 +65,14 @@ pub struct Reductions {
     /// Per bad output of the shared problem's reduction: the frames of IC3's last attempt on
     /// it that a limit stopped, from which its next attempt resumes.
     ic3_frames: Mutex<HashMap<usize, Ic3Frames>>,
+    /// Per property: its retimed problem and what localization has refined on it
+    /// ([`crate::localize::cegar_reducing`]), kept between attempts.
+    retimed: Mutex<HashMap<usize, Retimed>>,
 }
+
+/// A property's retimed problem (with the [`Blasted::aig`] latch of each of its latches,
+/// `None` for the added `stepped` latch) and localization's progress on it.
+type Retimed = (Arc<(Aig, Vec<Option<usize>>)>, crate::localize::Progress);
 
 /// The most lemma clauses kept for later proofs (beyond it, new invariants are not added:
 /// every frame of every later IC3 run carries them).
@@ -79,7 +86,56 @@ impl Reductions {
             shared: OnceLock::new(),
             lemmas: Mutex::new(Vec::new()),
             ic3_frames: Mutex::new(HashMap::new()),
+            retimed: Mutex::new(HashMap::new()),
         }
+    }
+
+    /// Localization on property `prop`'s retimed problem ([`Blasted::retimed_problem`]),
+    /// resumed from its last attempt; `None` when the property has no retimed form. The
+    /// answer is read on the original problem: a counterexample loses the retimed problem's
+    /// last frame; a proof is believed only when its invariant checks on the retimed problem,
+    /// and comes with a certificate of the original problem when [`original_invariant`]
+    /// finds one.
+    fn cegar_retimed(
+        &self,
+        bl: &Blasted,
+        prop: usize,
+        limits: &Limits,
+    ) -> Option<(Outcome, Option<(Aig, Invariant)>)> {
+        let taken = self
+            .retimed
+            .lock()
+            .unwrap_or_else(|e| e.into_inner())
+            .remove(&prop);
+        let (problem, mut progress) = match taken {
+            Some(x) => x,
+            None => (Arc::new(bl.retimed_problem(prop)?), Default::default()),
+        };
+        let (aig, origin) = &*problem;
+        let (out, _) = crate::sat::with_limits(limits, || {
+            crate::localize::cegar_reducing(aig, limits, &mut progress)
+        });
+        let mut cert = None;
+        let out = match out {
+            Outcome::Reached(t) => Outcome::Reached(crate::blast::retimed_trace(t)),
+            Outcome::Proved(Some(inv)) => match crate::cert::check(aig, &inv) {
+                Ok(()) => {
+                    cert = original_invariant(bl, prop, &inv, origin);
+                    Outcome::Proved(None)
+                }
+                Err(e) => {
+                    Outcome::Unknown(format!("the localization invariant does not check: {e}"))
+                }
+            },
+            out => out,
+        };
+        if matches!(out, Outcome::Unknown(_)) {
+            self.retimed
+                .lock()
+                .unwrap_or_else(|e| e.into_inner())
+                .insert(prop, (problem, progress));
+        }
+        Some((out, cert))
     }
 
     /// Whether problem `i`'s reduction is computed (and useful): then the engines go to it
@@ -271,11 +327,27 @@ fn run_property(
     let shared = reductions.shared(bl);
     let Some(k) = shared.bad_index.get(prop).copied().flatten() else {
         let aig = bl.problem(prop);
+        if engine == Engine::Cegar {
+            // A built-in's bad output is the step's error, which has no form on the state:
+            // localization would keep most of the circuit, and waiting for the whole
+            // circuit's reduction here would hold up the own properties (minutes on master +
+            // 3..5 FAMs). IC3 on the circuit as blasted, within the attempt's budget; IC3
+            // and k-induction take the reduced one.
+            return match engine_ic3_blasted(&aig, limits) {
+                Outcome::Proved(Some(inv)) => (Outcome::Proved(None), Some((aig, inv))),
+                out => (out, None),
+            };
+        }
         return match run_reduced(engine, &aig, prop, reductions, limits) {
             Outcome::Proved(Some(inv)) => (Outcome::Proved(None), Some((aig, inv))),
             out => (out, None),
         };
     };
+    if engine == Engine::Cegar {
+        if let Some(answer) = reductions.cegar_retimed(bl, prop, limits) {
+            return answer;
+        }
+    }
     let aig = shared.with_bad(k);
     let ready = reductions.shared_ready();
     match run_with(engine, &aig, limits, ready, Some((reductions, k)), || {
@@ -290,6 +362,41 @@ fn run_property(
         }
         out => (out, None),
     }
+}
+
+/// IC3 on a circuit as blasted (no reduction).
+fn engine_ic3_blasted(aig: &Aig, limits: &Limits) -> Outcome {
+    Engine::Ic3.run(aig, limits)
+}
+
+/// A certificate of property `prop`'s original problem ([`Blasted::problem`]) from `inv`, an
+/// inductive invariant of its retimed problem (latches numbered by `origin`, `None` for
+/// `stepped`), when there is one: `inv` with `stepped` true. Its consecution and safety on
+/// the original problem follow from the retimed problem's consecution (a tick from a state of
+/// it reaches one with `stepped` true, which is not bad); it holds initially when the reset
+/// state, read as a state after a tick, satisfies it. The result is checked; `None` if it
+/// fails.
+fn original_invariant(
+    bl: &Blasted,
+    prop: usize,
+    inv: &Invariant,
+    origin: &[Option<usize>],
+) -> Option<(Aig, Invariant)> {
+    let stepped = origin.iter().position(Option::is_none);
+    let after_a_tick: Invariant = inv
+        .iter()
+        .filter(|c| !c.iter().any(|&(j, v)| Some(j) == stepped && v))
+        .map(|c| {
+            c.iter()
+                .copied()
+                .filter(|&(j, _)| Some(j) != stepped)
+                .collect()
+        })
+        .collect();
+    let from: Vec<usize> = origin.iter().map(|o| o.unwrap_or(usize::MAX)).collect();
+    let (own, kept) = bl.problem_with_latches(prop);
+    let inv = renumber(&after_a_tick, &from, &kept);
+    crate::cert::check(&own, &inv).is_ok().then_some((own, inv))
 }
 
 /// An invariant over latches numbered by `from` (index in a base circuit of each latch) over

@@ -19,12 +19,14 @@
 //! [`Machine`]: statecheck_ir::Machine
 
 mod expr;
+mod retime;
 
 use crate::aig::{Aig, Lit};
 use crate::bv::{self, Bv};
 use statecheck_ir::{Goal, Program, Stmt};
 
 pub use expr::{BAD_SHIFT, DIV_ZERO, RANGE};
+pub use retime::retimed_trace;
 
 /// How one free input is encoded.
 #[derive(Clone, Debug)]
@@ -69,6 +71,11 @@ pub struct PropSignal {
     /// Set on a transition that violates (or, for `reachable`, witnesses) it; the step has
     /// no run-time error (except for built-ins, where it is the error).
     pub bad: Lit,
+    /// The same violation (or target) read on the latches instead of the step's post-state:
+    /// true in a state the step has produced that violates it. Only for an own property that
+    /// reads nothing but persistent state (`None` otherwise: a built-in, or a property that
+    /// reads an input or a temporary). [`Blasted::retimed_problem`] watches it one tick later.
+    pub on_state: Option<Lit>,
 }
 
 /// The step of a program as a circuit.
@@ -194,20 +201,23 @@ pub fn blast(p: &Program) -> Blasted {
     }
     let mut props = Vec::new();
     for prop in &p.properties {
-        let (raw, reachable) = match prop.goal {
-            Goal::Always { when, holds } => {
-                let a = when.map_or(Lit::TRUE, |a| b.holds(a));
-                let e = b.holds(holds);
-                (b.g.and(a, !e), false)
-            }
-            Goal::Reach { target } => (b.holds(target), true),
-        };
+        let (raw, reachable) = b.goal(prop.goal);
         let bad = b.g.and(raw, no_err);
+        // The same goal on the pre-state: the latches hold the state slots' post-step values
+        // of the tick before, so this is `raw` one tick later (temporaries and inputs are
+        // not latched, so a goal that reads them has no such form).
+        let on_state = retime::reads_only_state(p, prop.goal).then(|| {
+            let post = std::mem::replace(&mut b.env, state_env(p, &state));
+            let (raw, _) = b.goal(prop.goal);
+            b.env = post;
+            raw
+        });
         props.push(PropSignal {
             name: prop.name.clone(),
             builtin: None,
             reachable,
             bad,
+            on_state,
         });
     }
     for builtin in statecheck_ir::verdict::Builtin::ALL {
@@ -217,6 +227,7 @@ pub fn blast(p: &Program) -> Blasted {
             builtin: Some(k),
             reachable: false,
             bad: b.errs[k],
+            on_state: None,
         });
     }
     for (i, s) in state.iter().enumerate() {
@@ -241,7 +252,32 @@ pub fn blast(p: &Program) -> Blasted {
     }
 }
 
+/// An environment in which the state slots are their latches (the pre-state) and every other
+/// slot its initial value (never read by a goal [`retime::reads_only_state`] accepts).
+fn state_env(p: &Program, state: &[Bv]) -> Vec<Bv> {
+    let mut env = state.to_vec();
+    env.extend(
+        p.slots[state.len()..]
+            .iter()
+            .map(|s| Bv::constant(s.init as i128)),
+    );
+    env
+}
+
 impl Blaster<'_> {
+    /// A property's goal as a signal: the violation of an invariant, or the target of a
+    /// `reachable` property (true), over the current environment.
+    fn goal(&mut self, goal: Goal) -> (Lit, bool) {
+        match goal {
+            Goal::Always { when, holds } => {
+                let a = when.map_or(Lit::TRUE, |a| self.holds(a));
+                let e = self.holds(holds);
+                (self.g.and(a, !e), false)
+            }
+            Goal::Reach { target } => (self.holds(target), true),
+        }
+    }
+
     fn block(&mut self, stmts: &[Stmt], pc: Lit) {
         for s in stmts {
             if pc == Lit::FALSE {
