@@ -249,12 +249,12 @@ fn linear_drive_liveness() {
             .any(|l| l.starts_with("chart ") || l.starts_with("plant chart ")),
         "no chart of its own: they would be copies"
     );
+    let model = format!("{root}/examples/linear_drive/liveness/linear_drive_live.sc");
+    let dir = std::env::temp_dir().join(format!("statecheck-lindrive-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
     let out = Command::new(BIN)
-        .args([
-            "verify",
-            &format!("{root}/examples/linear_drive/liveness/linear_drive_live.sc"),
-            "--json",
-        ])
+        .args(["verify", &model, "--json", "--cex-dir"])
+        .arg(&dir)
         .output()
         .expect("statecheck runs");
     let v: Value = serde_json::from_slice(&out.stdout).expect("JSON");
@@ -273,6 +273,24 @@ fn linear_drive_liveness() {
     assert_eq!(verdict("can_stop").as_deref(), Some("proved"));
     assert_eq!(verdict("can_run").as_deref(), Some("proved"));
     assert_eq!(verdict("deadlock_free").as_deref(), Some("proved"));
+    // The lasso of the violated property replays in `sim` (exit 4; the Halt escape makes the
+    // two proved properties hold on it, so the violated one is the one `sim` names).
+    let cex = dir.join("run_reaches_left_always.scn");
+    let text = std::fs::read_to_string(&cex).expect("lasso written");
+    assert!(text.contains("loop:"), "{text}");
+    let sim = Command::new(BIN)
+        .args(["sim", &model, "--quiet", "--scenario"])
+        .arg(&cex)
+        .output()
+        .expect("sim runs");
+    let said =
+        String::from_utf8_lossy(&sim.stdout).into_owned() + &String::from_utf8_lossy(&sim.stderr);
+    assert_eq!(sim.status.code(), Some(4), "{said}");
+    assert!(
+        said.contains("`run_reaches_left_always` violated"),
+        "{said}"
+    );
+    let _ = std::fs::remove_dir_all(&dir);
 }
 
 /// `export aiger` of an `ltl` property writes an AIGER 1.9 justice property; `verify FILE.aig`
