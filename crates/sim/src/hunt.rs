@@ -10,7 +10,9 @@
 //! recurs. One tail in eight is **periodic** instead: a period of 2 to 32 ticks in which a
 //! window of ticks takes a second vector (a setpoint read differently in two ticks of a bus
 //! round, say), repeated until the state after a tick recurs at the same place of the period
-//! (the closed system fed a periodic input is deterministic and finite too). The run is then
+//! (the closed system fed a periodic input is deterministic and finite too); half the time the
+//! period is the length of a loop closed before (2 to 32 ticks), as a schedule's round
+//! is. The run is then
 //! a lasso; each open property's formula is evaluated on it with the
 //! IR's lasso semantics ([`statecheck_ir::temporal::holds_on_lasso`]), on fair lassos only
 //! (every justice atom somewhere in the loop, every compassion trigger there answered). A
@@ -178,6 +180,10 @@ pub fn hunt(
     }
     let mut stats = HuntStats::default();
     let mut corpus = Corpus::default();
+    // Lengths (2..=32) of the loops closed so far, at most PERIODS of them: a closed system
+    // with a schedule (a bus round) closes loops of the schedule's length, the period a
+    // periodic tail most likely needs.
+    let mut periods: Vec<usize> = Vec::new();
     let over = |stats: &HuntStats| {
         opts.stop.is_some_and(|s| s.load(Ordering::Relaxed))
             || opts.deadline.is_some_and(|d| Instant::now() >= d)
@@ -201,7 +207,8 @@ pub fn hunt(
         } else {
             None
         };
-        let Some(plan) = draw_plan(program, &mut rng, source, opts.max_prefix, base) else {
+        let Some(plan) = draw_plan(program, &mut rng, source, opts.max_prefix, base, &periods)
+        else {
             continue;
         };
         let Some(closed) = play(
@@ -215,6 +222,14 @@ pub fn hunt(
             continue;
         };
         stats.loops += 1;
+        let length = closed.inputs.len() - closed.loop_start;
+        if (2..=32).contains(&length) {
+            if periods.len() < PERIODS {
+                periods.push(length);
+            } else {
+                periods[stats.loops as usize % PERIODS] = length;
+            }
+        }
         let violated: Vec<usize> = open
             .iter()
             .filter(|(_, f)| violates(program, &atoms, &closed, f))
@@ -237,6 +252,9 @@ pub fn hunt(
     }
     stats
 }
+
+/// Most loop lengths remembered as periods of periodic tails.
+const PERIODS: usize = 64;
 
 /// Most runs kept in a [`Corpus`].
 const CORPUS_SIZE: usize = 512;
@@ -291,13 +309,15 @@ impl Corpus {
 }
 
 /// A random plan: segments of held vectors up to a random total length (after the segments of
-/// `base`, when given), and a tail vector.
+/// `base`, when given), and a tail: one vector, or (one time in eight) a period of two, whose
+/// length is half the time one of `periods`.
 fn draw_plan(
     program: &Program,
     rng: &mut rand::rngs::StdRng,
     source: &mut RandomInputs,
     max_prefix: usize,
     base: Option<Vec<(Vec<i64>, usize)>>,
+    periods: &[usize],
 ) -> Option<Plan> {
     // Log-uniform: short prefixes are tried most, long ones (a fault held through several
     // bus rounds of five FAMs) still often.
@@ -360,7 +380,12 @@ fn draw_plan(
     // A periodic tail: `one`, except in a window of the period, which takes `other`: a fresh
     // draw, or (half the time) that draw made quiet, so that only setpoints differ from a
     // quiet `one` (faults stay off in the loop, as "faults stop occurring" asks).
-    let period = rng.random_range(2..=32usize);
+    // Half the time the length of a loop closed before (module doc), else any.
+    let period = if !periods.is_empty() && rng.random_bool(0.5) {
+        periods[rng.random_range(0..periods.len())]
+    } else {
+        rng.random_range(2..=32usize)
+    };
     let mut other = one.clone();
     source.next(t as u64, &m, &mut other).ok()?;
     if rng.random_bool(0.5) {
