@@ -249,12 +249,12 @@ fn linear_drive_liveness() {
             .any(|l| l.starts_with("chart ") || l.starts_with("plant chart ")),
         "no chart of its own: they would be copies"
     );
+    let model = format!("{root}/examples/linear_drive/liveness/linear_drive_live.sc");
+    let dir = std::env::temp_dir().join(format!("statecheck-lindrive-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
     let out = Command::new(BIN)
-        .args([
-            "verify",
-            &format!("{root}/examples/linear_drive/liveness/linear_drive_live.sc"),
-            "--json",
-        ])
+        .args(["verify", &model, "--json", "--cex-dir"])
+        .arg(&dir)
         .output()
         .expect("statecheck runs");
     let v: Value = serde_json::from_slice(&out.stdout).expect("JSON");
@@ -273,6 +273,24 @@ fn linear_drive_liveness() {
     assert_eq!(verdict("can_stop").as_deref(), Some("proved"));
     assert_eq!(verdict("can_run").as_deref(), Some("proved"));
     assert_eq!(verdict("deadlock_free").as_deref(), Some("proved"));
+    // The lasso of the violated property replays in `sim` (exit 4; the Halt escape makes the
+    // two proved properties hold on it, so the violated one is the one `sim` names).
+    let cex = dir.join("run_reaches_left_always.scn");
+    let text = std::fs::read_to_string(&cex).expect("lasso written");
+    assert!(text.contains("loop:"), "{text}");
+    let sim = Command::new(BIN)
+        .args(["sim", &model, "--quiet", "--scenario"])
+        .arg(&cex)
+        .output()
+        .expect("sim runs");
+    let said =
+        String::from_utf8_lossy(&sim.stdout).into_owned() + &String::from_utf8_lossy(&sim.stderr);
+    assert_eq!(sim.status.code(), Some(4), "{said}");
+    assert!(
+        said.contains("`run_reaches_left_always` violated"),
+        "{said}"
+    );
+    let _ = std::fs::remove_dir_all(&dir);
 }
 
 /// `export aiger` of an `ltl` property writes an AIGER 1.9 justice property; `verify FILE.aig`
@@ -494,5 +512,85 @@ fn fam_liveness_lassos_replay() {
     // so its assumption fails anyway) and the run completes.
     let (code, text) = sim(&only, &scn("stall_never_acknowledged"));
     assert_eq!(code, Some(0), "{text}");
+    // `recalibrates_with_end_stops` (a corrected formula) is violated too: one FBF fault,
+    // then no fault and no stall, and a CCM that differs between the master's two processing
+    // ticks of each round keeps it in FBF_RUN for ever (the scenario's comment derives it).
+    // Checked on a copy with that property alone; the stall property holds on the lasso (no
+    // stall), so the copy with `stall_procedure_completes_unless_permanent` alone completes.
+    let body = |from: &str, to: &str| {
+        let a = src.find(from).expect("property");
+        let b = src[a..].find(to).map(|i| a + i).expect("next property");
+        format!(
+            "{}{}}}\n",
+            &src[..src.find("  ltl stall_procedure_completes:").expect("first")],
+            &src[a..b]
+        )
+    };
+    let rec = dir.join("liveness").join("rec.sc");
+    std::fs::write(
+        &rec,
+        body(
+            "  ltl recalibrates_with_end_stops:",
+            "  // The FAM reaches a commanded target, with end stops",
+        ),
+    )
+    .expect("write");
+    let (code, text) = sim(&rec.to_string_lossy(), &scn("fbf_run_never_ends"));
+    assert_eq!(code, Some(4), "{text}");
+    assert!(
+        text.contains("`recalibrates_with_end_stops` violated"),
+        "{text}"
+    );
+    let st = dir.join("liveness").join("st.sc");
+    std::fs::write(
+        &st,
+        body(
+            "  ltl stall_procedure_completes_unless_permanent:",
+            "  // After a failure is cleared the master recalibrates, or enters",
+        ),
+    )
+    .expect("write");
+    let (code, text) = sim(&st.to_string_lossy(), &scn("fbf_run_never_ends"));
+    assert_eq!(code, Some(0), "{text}");
+    // The same construction for master + N FAMs, N = 2..5 (rounds of 2N + 10 ticks), each on
+    // a copy of fam_liveN.sc with `recalibrates_with_end_stops` alone.
+    for n in 2..=5 {
+        let src_n = std::fs::read_to_string(format!("{root}/examples/fam/liveness/fam_live{n}.sc"))
+            .expect("model")
+            .replace(
+                &format!("import \"../fam_system{n}.sc\";"),
+                &format!("import \"{root}/examples/fam/fam_system{n}.sc\";"),
+            );
+        let a = src_n
+            .find("  ltl recalibrates_with_end_stops:")
+            .expect("property");
+        let b = src_n
+            .find("  ltl reaches_target_with_end_stops:")
+            .expect("next property");
+        let first = src_n
+            .find("  ltl stall_procedure_completes:")
+            .expect("first");
+        let copy = dir.join("liveness").join(format!("rec{n}.sc"));
+        std::fs::write(&copy, format!("{}{}}}\n", &src_n[..first], &src_n[a..b])).expect("write");
+        let out = Command::new(BIN)
+            .args([
+                "sim",
+                &copy.to_string_lossy(),
+                "--system",
+                &format!("FamLive{n}"),
+                "--quiet",
+                "--scenario",
+                &scn(&format!("fbf_run_never_ends{n}")),
+            ])
+            .output()
+            .expect("sim runs");
+        let text = String::from_utf8_lossy(&out.stdout).into_owned()
+            + &String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(4), "N = {n}: {text}");
+        assert!(
+            text.contains("`recalibrates_with_end_stops` violated"),
+            "N = {n}: {text}"
+        );
+    }
     let _ = std::fs::remove_dir_all(&dir);
 }

@@ -7,7 +7,13 @@
 //! drawn as random simulation draws it, within the `assume`s, held for a random number of
 //! ticks, then another), then holds one **tail** vector (by preference the quiet one: every
 //! rated input, a fault, at its likely value, every event absent) until the state after a tick
-//! recurs. The run is then a lasso; each open property's formula is evaluated on it with the
+//! recurs. One tail in eight is **periodic** instead: a period of 2 to 32 ticks in which a
+//! window of ticks takes a second vector (a setpoint read differently in two ticks of a bus
+//! round, say), repeated until the state after a tick recurs at the same place of the period
+//! (the closed system fed a periodic input is deterministic and finite too); half the time the
+//! period is the length of a loop closed before (2 to 32 ticks), as a schedule's round
+//! is. The run is then
+//! a lasso; each open property's formula is evaluated on it with the
 //! IR's lasso semantics ([`statecheck_ir::temporal::holds_on_lasso`]), on fair lassos only
 //! (every justice atom somewhere in the loop, every compassion trigger there answered). A
 //! violating lasso is shortened ([`shrink`]: segments removed and halved while it still
@@ -94,11 +100,12 @@ pub struct HuntStats {
     pub ticks: u64,
 }
 
-/// One attempt's inputs: the prefix's held segments and the tail's vector.
+/// One attempt's inputs: the prefix's held segments and the tail's period (one vector: a
+/// constant tail; more: tail tick `k` takes vector `k % period`).
 #[derive(Clone, Debug)]
 struct Plan {
     segments: Vec<(Vec<i64>, usize)>,
-    tail: Vec<i64>,
+    tail: Vec<Vec<i64>>,
 }
 
 /// The atoms the hunted formulas and the fairness constraints read, evaluated once per tick.
@@ -173,6 +180,10 @@ pub fn hunt(
     }
     let mut stats = HuntStats::default();
     let mut corpus = Corpus::default();
+    // Lengths (2..=32) of the loops closed so far, at most PERIODS of them: a closed system
+    // with a schedule (a bus round) closes loops of the schedule's length, the period a
+    // periodic tail most likely needs.
+    let mut periods: Vec<usize> = Vec::new();
     let over = |stats: &HuntStats| {
         opts.stop.is_some_and(|s| s.load(Ordering::Relaxed))
             || opts.deadline.is_some_and(|d| Instant::now() >= d)
@@ -196,7 +207,8 @@ pub fn hunt(
         } else {
             None
         };
-        let Some(plan) = draw_plan(program, &mut rng, source, opts.max_prefix, base) else {
+        let Some(plan) = draw_plan(program, &mut rng, source, opts.max_prefix, base, &periods)
+        else {
             continue;
         };
         let Some(closed) = play(
@@ -210,6 +222,14 @@ pub fn hunt(
             continue;
         };
         stats.loops += 1;
+        let length = closed.inputs.len() - closed.loop_start;
+        if (2..=32).contains(&length) {
+            if periods.len() < PERIODS {
+                periods.push(length);
+            } else {
+                periods[stats.loops as usize % PERIODS] = length;
+            }
+        }
         let violated: Vec<usize> = open
             .iter()
             .filter(|(_, f)| violates(program, &atoms, &closed, f))
@@ -232,6 +252,9 @@ pub fn hunt(
     }
     stats
 }
+
+/// Most loop lengths remembered as periods of periodic tails.
+const PERIODS: usize = 64;
 
 /// Most runs kept in a [`Corpus`].
 const CORPUS_SIZE: usize = 512;
@@ -266,7 +289,15 @@ impl Corpus {
             left -= d;
         }
         if left > 0 && tick >= prefix {
-            kept.push((plan.tail.clone(), left));
+            // A periodic tail is kept tick by tick (at most one period: a kept run is a
+            // beginning to extend, and the period's continuation is drawn again).
+            if let [v] = plan.tail.as_slice() {
+                kept.push((v.clone(), left));
+            } else {
+                for k in 0..left.min(plan.tail.len()) {
+                    kept.push((plan.tail[k].clone(), 1));
+                }
+            }
         }
         if self.entries.len() < CORPUS_SIZE {
             self.entries.push(kept);
@@ -278,13 +309,15 @@ impl Corpus {
 }
 
 /// A random plan: segments of held vectors up to a random total length (after the segments of
-/// `base`, when given), and a tail vector.
+/// `base`, when given), and a tail: one vector, or (one time in eight) a period of two, whose
+/// length is half the time one of `periods`.
 fn draw_plan(
     program: &Program,
     rng: &mut rand::rngs::StdRng,
     source: &mut RandomInputs,
     max_prefix: usize,
     base: Option<Vec<(Vec<i64>, usize)>>,
+    periods: &[usize],
 ) -> Option<Plan> {
     // Log-uniform: short prefixes are tried most, long ones (a fault held through several
     // bus rounds of five FAMs) still often.
@@ -329,7 +362,7 @@ fn draw_plan(
         t += held;
     }
     let last = segments.last().map(|(v, _)| v.clone()).unwrap_or(v);
-    let tail = match rng.random_range(0..4) {
+    let one = match rng.random_range(0..4) {
         0 | 1 => quiet(program, rng, &last),
         2 => last,
         _ => {
@@ -338,6 +371,37 @@ fn draw_plan(
             w
         }
     };
+    if rng.random_range(0..8) != 0 {
+        return Some(Plan {
+            segments,
+            tail: vec![one],
+        });
+    }
+    // A periodic tail: `one`, except in a window of the period, which takes `other`: a fresh
+    // draw, or (half the time) that draw made quiet, so that only setpoints differ from a
+    // quiet `one` (faults stay off in the loop, as "faults stop occurring" asks).
+    // Half the time the length of a loop closed before (module doc), else any.
+    let period = if !periods.is_empty() && rng.random_bool(0.5) {
+        periods[rng.random_range(0..periods.len())]
+    } else {
+        rng.random_range(2..=32usize)
+    };
+    let mut other = one.clone();
+    source.next(t as u64, &m, &mut other).ok()?;
+    if rng.random_bool(0.5) {
+        other = quiet(program, rng, &other);
+    }
+    let start = rng.random_range(0..period);
+    let width = rng.random_range(1..period);
+    let tail = (0..period)
+        .map(|k| {
+            if (k + period - start) % period < width {
+                other.clone()
+            } else {
+                one.clone()
+            }
+        })
+        .collect();
     Some(Plan { segments, tail })
 }
 
@@ -374,8 +438,9 @@ fn step(program: &Program, m: &mut Machine, v: &[i64]) -> bool {
     m.step().is_ok()
 }
 
-/// Run `plan`: the prefix, then the tail vector until the state after a tick recurs. `None`
-/// when a tick is refused or fails, or no state recurs within `max_tail` ticks.
+/// Run `plan`: the prefix, then the tail until the state after a tick recurs at the same place
+/// of the tail's period. `None` when a tick is refused or fails, or no state recurs within
+/// `max_tail` ticks.
 fn play(
     program: &Program,
     atoms: &Atoms,
@@ -406,31 +471,35 @@ fn play(
         }
     }
     let prefix = inputs.len();
-    // The state after tick `i` for every `i >= prefix - 1` (the loop must start within the
-    // tail, whose inputs are all equal); after tick 0 at the earliest.
-    let mut seen: HashMap<Vec<i64>, usize> = HashMap::new();
+    let period = plan.tail.len().max(1);
+    // The state after tick `i`, with the place in the period of the next tail tick, for every
+    // `i >= prefix - 1` (the loop must start within the tail, whose inputs repeat with the
+    // period); after tick 0 at the earliest.
+    let mut seen: HashMap<(Vec<i64>, usize), usize> = HashMap::new();
     if prefix > 0 {
-        seen.insert(m.state().to_vec(), prefix - 1);
+        seen.insert((m.state().to_vec(), 0), prefix - 1);
     }
-    for _ in 0..max_tail {
+    for k in 0..max_tail {
+        let v = plan.tail.get(k % period)?;
         stats.ticks += 1;
-        if !step(program, &mut m, &plan.tail) {
+        if !step(program, &mut m, v) {
             return None;
         }
         let j = inputs.len();
-        inputs.push(plan.tail.clone());
+        inputs.push(v.clone());
         atoms.record(program, m.slots(), &mut values);
         note(&values, j);
-        if let Some(&i) = seen.get(m.state()) {
-            // State after tick j == state after tick i, with the same inputs from tick i + 1
-            // on: ticks i + 1 ..= j repeat for ever.
+        let key = (m.state().to_vec(), (k + 1) % period);
+        if let Some(&i) = seen.get(&key) {
+            // State after tick j == state after tick i, and the next tail ticks take the same
+            // vectors from tick i + 1 on: ticks i + 1 ..= j repeat for ever.
             return Some(Closed {
                 inputs,
                 values,
                 loop_start: i + 1,
             });
         }
-        seen.insert(m.state().to_vec(), j);
+        seen.insert(key, j);
     }
     None
 }

@@ -106,3 +106,58 @@ fn hunt_reports_nothing_for_a_property_that_holds() {
     // The attempts did close loops (the hunt ran, it found nothing to report).
     assert!(stats.loops > 100, "{stats:?}");
 }
+
+// A job that finishes when `a` reads the same in a tick with `ph == 0` and the next one
+// (`ph == 1`); `ph` counts ticks modulo 4 from tick 1 (tick 0 only enters `S`).
+//
+// Hand derivation: `finishes` (`F !waiting`) is violated exactly by the runs in which `a`
+// differs between every tick with `ph == 0` and the next tick: once it reads equal, `waiting`
+// is false for ever. So no lasso whose loop holds `a` constant violates it (the loop repeats
+// for ever and takes in a `ph == 0` tick and the next one, as the loop is at least as long
+// as the period 4 or repeats inside it), and the lasso that holds `a` and `!a` alternately
+// does (consecutive ticks differ).
+const PERIODIC: &str = r#"
+chart C {
+  input a: bool = false;
+  output ph: int[0..3] = 0;
+  output waiting: bool = true;
+  local first: bool = false;
+  initial S;
+  state S {
+    during {
+      if ph == 0 { first = a; }
+      if ph == 1 && a == first { waiting = false; }
+      ph = (ph + 1) % 4;
+    }
+  }
+}
+system Sys {
+  instance c: C;
+  ltl finishes: F !c.waiting;
+}
+"#;
+
+#[test]
+fn hunt_finds_a_lasso_whose_loop_needs_a_periodic_input() {
+    let (file, d1) = statecheck_syntax::parse(PERIODIC);
+    let (model, d2) = statecheck_model::check(&file);
+    assert!(d1.iter().chain(&d2).all(|d| !d.is_error()), "{d1:?} {d2:?}");
+    let p = lower(&model, &model.systems[0]).expect("lowers");
+    let opts = HuntOptions {
+        seed: 11,
+        max_attempts: Some(20_000),
+        ..Default::default()
+    };
+    let mut found = Vec::new();
+    let stats = hunt(&p, &[0], &opts, &|_| true, &mut |f| found.push(f));
+    assert_eq!(found.len(), 1, "no lasso in {stats:?}");
+    let f = &found[0];
+    // Necessary by the derivation: `a` is not constant in the loop.
+    let a = |v: &Vec<i64>| v[0];
+    let lp = &f.inputs[f.loop_start..];
+    assert!(lp.iter().any(|v| a(v) != a(&lp[0])), "{:?}", f.inputs);
+    let sc = from_lasso(&p, &f.inputs, f.loop_start);
+    let run = run_lasso(&p, &sc, Options::default());
+    assert!(run.broken.is_none(), "{:?}", run.broken);
+    assert_eq!(run.violated, vec!["finishes".to_string()]);
+}

@@ -109,12 +109,16 @@ system FamLive {
   // After a failure is cleared the master recalibrates, or enters a permanent failure mode,
   // with end stops: from some tick on the only fault is a stall at an end stop (calmEnd), and
   // a FAM that runs outside the range infinitely often stalls infinitely often (compassion,
-  // written in the formula). Expected to hold: a calibration run aims outside the range, so
-  // it ends in a stall at the end stop (or bounces, D.3.2.1 note, and is retried from
-  // NORMAL, the compassion making one of the retries stall); the stall lies in the gray
-  // zone, so STALL_ACK re-references the end and goes to CLEAR_CALIB, whose CLEAR_NOT_CALIB
-  // clears notCalib, then NORMAL. A fault before calm may instead end in HSL_PERM or
-  // FBF_PERM, where the master never calibrates (FAILURE_RUN "until power off", D.3.2.3).
+  // written in the formula). A calibration run aims outside the range, so it ends in a stall
+  // at the end stop (or bounces, D.3.2.1 note, and is retried from NORMAL, the compassion
+  // making one of the retries stall); the stall lies in the gray zone, so STALL_ACK
+  // re-references the end and goes to CLEAR_CALIB, whose CLEAR_NOT_CALIB clears notCalib,
+  // then NORMAL. A fault before calm may instead end in HSL_PERM or FBF_PERM, where the
+  // master never calibrates (FAILURE_RUN "until power off", D.3.2.3). VIOLATED all the same,
+  // by scenarios/fbf_run_never_ends.scn: after a bit-2 failure the master's FBF_RUN ends only
+  // when the FAM stands at the target of the CCM read in that tick, and a CCM that differs
+  // between the two processing ticks of every round keeps it there for ever (the CCM is not
+  // a fault; reaches_target_with_end_stops holds it at 500).
   ltl recalibrates_with_end_stops:
     (F G calmEnd(fam.stallNow, fam.hslFault, fam.epmFault, fam.fbfFault, bus.corrupt,
                  ctrl.corrupt, fam.actualPos, fam.dir)
