@@ -2,7 +2,7 @@
 //! of the IR, which must agree.
 //!
 //! For each model: no panic anywhere; the explicit engine's definitive verdicts equal BMC's,
-//! k-induction's and IC3's (same verdict, counterexamples of the same shortest length); every
+//! k-induction's, IC3's and CEGAR's (same verdict, counterexamples of the same shortest length); every
 //! counterexample of every engine replays in the interpreter to the violation it claims; the
 //! generated Promela is accepted by `spin -a` (when SPIN is installed). For each batch of
 //! models: one C program (gcc `-std=c99 -Wall -Wextra -Werror`) and, for one batch in
@@ -26,6 +26,16 @@ const RUNS: usize = 4;
 const TICKS: usize = 16;
 /// States above which the explicit engine's answer is not used as the reference.
 const MAX_STATES: u64 = 20_000;
+/// Input vectors per tick (after the input-only assumes) above which the explicit engine
+/// refuses the model: every state is stepped with every vector (or one per combination of
+/// the inputs a tick reads), so a system of two charts and a component array with free
+/// inputs (420,000 vectors) took minutes for one model. Such models are counted as
+/// `explicit skipped (too wide)`; the other oracles (no panic, replays of the SAT engines'
+/// counterexamples, C/Rust traces, SPIN) still run on them.
+const MAX_BRANCHING: u128 = 50_000;
+/// Wall time after which the explicit reference gives up (counted with the models bounded
+/// by [`MAX_STATES`]): a safety net under the two caps above.
+const EXPLICIT_TIME: Duration = Duration::from_secs(10);
 
 /// The figures of a differential run.
 #[derive(Clone, Debug, Default)]
@@ -34,13 +44,18 @@ pub struct Report {
     pub models: u64,
     /// Models the checker rejected (only `E0104`, a constant out of range, is expected).
     pub rejected: u64,
-    /// Checked models whose explicit exploration stopped at its bound of states without
-    /// deciding every property (their verdicts are not compared).
+    /// Checked models whose explicit exploration stopped at its bound of states (or of
+    /// time) without deciding every property (their undecided verdicts are not compared).
     pub incomplete: u64,
+    /// Checked models the explicit reference refused as too wide (more than
+    /// `MAX_BRANCHING` input vectors per tick): no verdicts compared.
+    pub too_wide: u64,
+    /// The explicit engine returned an error (each is also a failure).
+    pub explicit_errors: u64,
     /// Verdict pairs compared (explicit vs a SAT engine).
     pub verdicts: u64,
-    /// SAT engine runs (BMC, k-induction, IC3) that ended `unknown` (a limit), not compared.
-    pub unknown: [u64; 3],
+    /// SAT engine runs (BMC, k-induction, IC3, CEGAR) that ended `unknown` (a limit), not compared.
+    pub unknown: [u64; 4],
     /// Counterexamples replayed.
     pub replays: u64,
     /// Models whose traces were compared with the generated C / Rust.
@@ -67,8 +82,8 @@ pub struct Times {
     pub explicit: Duration,
     /// BMC, k-induction and IC3 and the replays of their counterexamples.
     pub sat: Duration,
-    /// Of `sat`: each engine's `decide` calls (BMC, k-induction, IC3).
-    pub engines: [Duration; 3],
+    /// Of `sat`: each engine's `decide` calls (BMC, k-induction, IC3, CEGAR).
+    pub engines: [Duration; 4],
     /// Exporting Promela and `spin -a`.
     pub spin: Duration,
     /// Generating C and Rust and the interpreter's expected traces.
@@ -103,6 +118,8 @@ impl Report {
         self.models += o.models;
         self.rejected += o.rejected;
         self.incomplete += o.incomplete;
+        self.too_wide += o.too_wide;
+        self.explicit_errors += o.explicit_errors;
         self.verdicts += o.verdicts;
         for (a, b) in self.unknown.iter_mut().zip(o.unknown) {
             *a += b;
@@ -201,7 +218,7 @@ fn engine_time(engine: Engine) -> Duration {
     }
 }
 
-/// Check one lowered model's verdicts: explicit against BMC, k-induction and IC3.
+/// Check one lowered model's verdicts: explicit against BMC, k-induction, IC3 and CEGAR.
 fn verdicts(p: &Program, text: &str, rep: &mut Report) {
     let began = Instant::now();
     verdicts_inner(p, text, rep, began);
@@ -211,12 +228,25 @@ fn verdicts_inner(p: &Program, text: &str, rep: &mut Report, began: Instant) {
     let opts = Options {
         threads: 1,
         max_states: Some(MAX_STATES),
+        max_branching: MAX_BRANCHING,
+        timeout: Some(EXPLICIT_TIME),
         backend: statecheck_explicit::Backend::Interpreter,
         ..Options::default()
     };
-    let Ok(ex) = statecheck_explicit::verify(p, &opts, None) else {
-        return;
+    let ex = match statecheck_explicit::verify(p, &opts, None) {
+        Ok(ex) => ex,
+        Err(e) => {
+            rep.explicit_errors += 1;
+            rep.failures
+                .push(format!("the explicit engine failed: {e}\n{text}"));
+            return;
+        }
     };
+    if ex.stats.states == 0 && ex.results.iter().all(|r| r.verdict == Verdict::Unknown) {
+        rep.too_wide += 1;
+        rep.times.explicit += began.elapsed();
+        return;
+    }
     for r in &ex.results {
         if let Some(c) = &r.counterexample {
             if r.loop_start.is_none()
@@ -242,6 +272,17 @@ fn verdicts_inner(p: &Program, text: &str, rep: &mut Report, began: Instant) {
     }
     let sat_began = Instant::now();
     rep.times.explicit += sat_began - began;
+    if sat_began - began > Duration::from_secs(2) {
+        // The explicit reference's slow models, to see what makes them slow.
+        eprintln!(
+            "slow explicit reference: {:.1} s, {} states, {} transitions, branching {}, complete {}",
+            (sat_began - began).as_secs_f64(),
+            ex.stats.states,
+            ex.stats.transitions,
+            ex.stats.branching,
+            ex.stats.complete
+        );
+    }
     if !ex.stats.complete && !ex.stats.all_decided {
         rep.incomplete += 1;
         return;
@@ -250,7 +291,7 @@ fn verdicts_inner(p: &Program, text: &str, rep: &mut Report, began: Instant) {
     rep.times.sat += sat_began.elapsed();
 }
 
-/// BMC's, k-induction's and IC3's verdicts against the explicit engine's `ex`.
+/// BMC's, k-induction's, IC3's and CEGAR's (IC3 on a localization abstraction) verdicts against the explicit engine's `ex`.
 fn sat_verdicts(p: &Program, text: &str, ex: &statecheck_explicit::Report, rep: &mut Report) {
     let Ok((bl, idx)) = problems(p, &[]) else {
         rep.failures
@@ -266,7 +307,7 @@ fn sat_verdicts(p: &Program, text: &str, ex: &statecheck_explicit::Report, rep: 
         if r.verdict == Verdict::Unknown {
             continue;
         }
-        for engine in [Engine::Bmc, Engine::Kind, Engine::Ic3] {
+        for engine in [Engine::Bmc, Engine::Kind, Engine::Ic3, Engine::Cegar] {
             if engine == Engine::Bmc && matches!(r.verdict, Verdict::Proved | Verdict::Unreachable)
             {
                 continue;

@@ -8,10 +8,12 @@
 //! system, a composite component (ports, parameters, nesting, instance arrays) and a hybrid
 //! plant (`continuous`, `grid`, `sensor`, `der`, `profile`), see [`extra`], and arrays of
 //! variables (`input r[2]`, `output g[2]`) read and written by constant index and in `for j
-//! in 0..2` loops, connected element by element (`[*]`) between two instances. Not
-//! generated: imports (file-level), interfaces with slots. Also the generator of the codegen crate's differential test.
+//! in 0..2` loops, connected element by element (`[*]`) between two instances, and an
+//! interface with two implementing charts filling a slot in two configurations ([`slots`]).
+//! Not generated: imports (file-level). Also the generator of the codegen crate's differential test.
 
 mod extra;
+mod slots;
 
 use rand::rngs::StdRng;
 use rand::{RngExt, SeedableRng};
@@ -153,7 +155,10 @@ impl Gen {
             }
             let s = match self.pick(8) {
                 0 | 1 => format!("x = {};", self.int_expr(2)),
-                2 => format!("y = {};", self.int_expr(2)),
+                2 => {
+                    let e = fit(self.int_expr(2), 0, 3);
+                    format!("y = {e};")
+                }
                 3 => format!("f = {};", self.bool_expr(2)),
                 4 => "raise le;".into(),
                 5 => "raise oe;".into(),
@@ -161,7 +166,7 @@ impl Gen {
                 _ => {
                     let c = self.bool_expr(2);
                     let t = format!("x = {};", self.int_expr(1));
-                    let e = format!("y = {};", self.int_expr(1));
+                    let e = format!("y = {};", fit(self.int_expr(1), 0, 3));
                     format!("if {c} {{ {t} }} else {{ {e} }}")
                 }
             };
@@ -176,7 +181,7 @@ impl Gen {
     fn array_stmt(&mut self) -> String {
         if self.chance(60) {
             self.in_loop = true;
-            let e = self.int_expr(1);
+            let e = fit(self.int_expr(1), 0, 3);
             let extra = if self.chance(40) {
                 format!(" x += {};", self.int_leaf())
             } else {
@@ -186,7 +191,7 @@ impl Gen {
             format!("for j in 0..2 {{ g[j] = {e};{extra} }}")
         } else {
             let i = self.pick(2);
-            let e = self.int_expr(1);
+            let e = fit(self.int_expr(1), 0, 3);
             if self.chance(30) {
                 format!("g[{i}] += {e};")
             } else {
@@ -406,11 +411,12 @@ impl Gen {
     /// with properties, some models also get a composite component, a hybrid plant or an
     /// interleaved system ([`extra`]).
     pub fn model_with(&mut self, props: bool) -> String {
-        let (mut plant, mut composite, mut interleaved) = (false, false, false);
+        let (mut plant, mut composite, mut interleaved, mut slotted) = (false, false, false, false);
         if props {
             self.param = self.chance(25);
             self.time_units = self.chance(25);
             composite = self.chance(20);
+            slotted = self.chance(20);
             plant = self.chance(15);
             interleaved = self.chance(15);
             self.arrays = self.chance(25);
@@ -442,7 +448,7 @@ impl Gen {
             ""
         };
         let mut text = format!(
-            "{tick}chart C{decl} {{\n  input event e0;\n  input event e1;\n  input a: int[-4..4] = 0;\n  input b: bool = false;\n  input c: int[-2..3] = 1;\n  {arrays}output x: int[-20..20] = 0;\n  output y: int[0..7] = 0;\n  local f: bool = false;\n  local event le;\n  output event oe;\n  {body}\n}}\n"
+            "{tick}chart C{decl} {{\n  input event e0;\n  input event e1;\n  input a: int[-4..4] = 0;\n  input b: bool = false;\n  input c: int[-2..3] = 1;\n  {arrays}output x: int[-20..20] = 0;\n  output y: int[0..3] = 0;\n  local f: bool = false;\n  local event le;\n  output event oe;\n  {body}\n}}\n"
         );
         if !two && !props {
             return text;
@@ -456,6 +462,9 @@ impl Gen {
         if composite {
             extras.push(self.composite());
         }
+        if slotted {
+            extras.push(self.slotted());
+        }
         if plant {
             extras.push(self.plant());
         }
@@ -467,8 +476,12 @@ impl Gen {
         sys.push_str(&format!("  instance p: C{pa};\n"));
         if two {
             sys.push_str(&format!(
-                "  instance q: C{qa};\n  connect p.x -> q.c;\n  connect p.oe -> q.e1;\n"
+                "  instance q: C{qa};\n  connect p.y -> q.c;\n  connect p.oe -> q.e1;\n"
             ));
+            // `q`'s free data inputs follow `p`'s (an input-only assume, solved before the
+            // search): 864 input vectors per tick instead of 15,552, so that the explicit
+            // reference can decide most systems of two (over 50,000 it skips the model).
+            sys.push_str("  assume q.a == p.a && q.b != p.b;\n");
             if self.arrays {
                 sys.push_str(if self.chance(60) {
                     "  connect p.g[*] -> q.r[*];\n"
@@ -490,6 +503,17 @@ impl Gen {
         let name = if two { "Two" } else { "One" };
         let mode = if interleaved { " interleaved" } else { "" };
         format!("{text}\nsystem {name}{mode} {{\n{sys}}}\n")
+    }
+}
+
+/// `e` itself, or, if it is an integer literal outside `lo..=hi`, a literal inside: the
+/// checker rejects a constant assignment out of its target's range (E0104), which would
+/// waste the whole model; values that leave the range at run time stay (a run-time error
+/// the engines must agree on).
+fn fit(e: String, lo: i64, hi: i64) -> String {
+    match e.parse::<i64>() {
+        Ok(v) if v < lo || v > hi => (lo + v.rem_euclid(hi - lo + 1)).to_string(),
+        _ => e,
     }
 }
 

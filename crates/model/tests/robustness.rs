@@ -178,3 +178,28 @@ chart A(k: int[0..3]) { initial S; state S; }
 ";
     assert_eq!(errors(src), vec![("E0102", 2)]);
 }
+
+#[test]
+fn thousands_of_copies_of_a_component_with_bad_names_are_checked_in_linear_time() {
+    // `statecheck-fuzz show --target check --seed 12021250 --index 98689` (a mutation of the
+    // component-size family) took 5.2 s in `check` (56 s in a debug build): each of the
+    // thousands of flattened copies of a component with an unknown endpoint scanned every
+    // diagnostic so far, and the cascade suppression made a pass over the diagnostics per
+    // instance of an unknown chart. Here L0 holds an instance of the unknown chart `Missing`
+    // and a connection from the unknown instance `nope`; L11 doubles it 11 times (2048
+    // copies of L0, 4095 instances: under the limit of 4096) and three systems flatten it:
+    // 6144 copies, which the quadratic passes made tens of millions of message scans.
+    // Every problem is reported once, at its span in L0's line: the unknown chart, the two
+    // connections through the missing instance `x`, and `nope`.
+    let mut src = String::from("component L0 { input a: bool; output b: bool; instance x: Missing; connect a -> x.a; connect x.b -> b; connect a -> nope.a; }\n");
+    for k in 1..=11 {
+        src.push_str(&format!(
+            "component L{k} {{ input a: bool; output b: bool; instance x: L{j}; instance y: L{j}; connect a -> x.a; connect x.b -> y.a; connect y.b -> b; }}\n",
+            j = k - 1
+        ));
+    }
+    for i in 0..3 {
+        src.push_str(&format!("system T{i} {{ instance t: L11; }}\n"));
+    }
+    assert_eq!(errors(&src), vec![("E0101", 1); 4]);
+}

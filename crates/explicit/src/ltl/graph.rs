@@ -24,6 +24,8 @@ pub struct GraphLimits {
     pub max_memory: Option<u64>,
     /// Deadline.
     pub deadline: Option<Instant>,
+    /// Most input vectors per tick (`--force` lifts it to `u32::MAX`, the hard cap).
+    pub max_branching: Option<u128>,
 }
 
 /// Why a construction stopped early.
@@ -147,9 +149,14 @@ pub fn build_partial(
     let start = Instant::now();
     let mut space = InputSpace::new(program);
     space.solve_static(program);
-    if space.per_tick() > u128::from(u32::MAX) {
+    let per_tick = space.per_tick();
+    if per_tick > u128::from(u32::MAX) || limits.max_branching.is_some_and(|m| per_tick > m) {
         return (Kripke::default(), Some(Stopped::Branching));
     }
+    // The limits are read before expanding one state in `every`: each expansion steps up to
+    // `per_tick` input vectors, so with wide inputs a fixed 1024 states between readings ran
+    // minutes past `--timeout` (4·10^8 ticks with 420,000 vectors per state).
+    let every = (65_536 / per_tick.max(1)).clamp(1, 1024) as u32;
     let packer = Packer::new(program);
     let words = packer.words.max(1);
     let mut m = Machine::new(program);
@@ -180,7 +187,7 @@ pub fn build_partial(
     let mut seen_here: Vec<u32> = Vec::new();
     let mut s = 0u32;
     while (s as usize) < g.states.len() / words {
-        if s.is_multiple_of(1024) {
+        if s.is_multiple_of(every) {
             let stop = if limits.max_states.is_some_and(|k| index.len() as u64 > k) {
                 Some(Stopped::States)
             } else if limits

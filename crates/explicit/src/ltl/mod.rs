@@ -150,6 +150,7 @@ pub fn check(
         max_states: opts.max_states,
         max_memory: opts.max_memory,
         deadline: opts.timeout.map(|t| start + t.mul_f64(0.75)),
+        max_branching: (!opts.force).then_some(opts.max_branching),
     };
     let g = match graph::build_partial(program, &atoms, limits) {
         (g, None) => g,

@@ -194,6 +194,7 @@ fn diff(a: &Args) -> Result<ExitCode, String> {
         eprintln!("note: spin not found; Promela is not checked");
     }
     let next = AtomicU64::new(0);
+    let saved = AtomicU64::new(0);
     let total = Mutex::new(diff::Report::default());
     let began = Instant::now();
     let batches = models.div_ceil(per.max(1));
@@ -209,32 +210,50 @@ fn diff(a: &Args) -> Result<ExitCode, String> {
                 let rust = rust_every > 0 && b.is_multiple_of(rust_every);
                 let r = diff::batch(seed, first, n, rust, spin, &diff::temp_dir(&format!("b{b}")));
                 let mut t = total.lock().unwrap_or_else(|e| e.into_inner());
-                eprintln!(
-                    "batch {b}: {} models, {} verdicts, {} replays, {} failures, {} compile failures ({:.0} s)",
-                    r.models,
-                    r.verdicts,
-                    r.replays,
-                    r.failures.len(),
-                    r.compile_failures.len(),
-                    began.elapsed().as_secs_f64()
-                );
+                // Failures are saved as they come, so that a run stopped early keeps them.
+                let _ = std::fs::create_dir_all(&out);
+                for f in r.failures.iter().chain(&r.compile_failures) {
+                    let k = saved.fetch_add(1, Ordering::Relaxed);
+                    let _ = std::fs::write(out.join(format!("diff-{seed}-{k}.txt")), f);
+                }
+                let b_models = r.models;
+                let (b_verdicts, b_replays) = (r.verdicts, r.replays);
+                let (b_fail, b_cfail) = (r.failures.len(), r.compile_failures.len());
                 t.add(r);
+                // The batch and the run's totals so far (a run stopped early keeps its figures).
+                eprintln!(
+                    "batch {b}: {b_models} models, {b_verdicts} verdicts, {b_replays} replays, {b_fail} failures, {b_cfail} compile failures ({:.0} s); total {} models, {} rejected, {} explicit bounded, {} too wide, {} verdict pairs, {} replays, {} C / {} Rust models, {} failures, {} compile failures",
+                    began.elapsed().as_secs_f64(),
+                    t.models,
+                    t.rejected,
+                    t.incomplete,
+                    t.too_wide,
+                    t.verdicts,
+                    t.replays,
+                    t.c_models,
+                    t.rust_models,
+                    t.failures.len(),
+                    t.compile_failures.len()
+                );
             });
         }
     });
     let t = total.into_inner().unwrap_or_else(|e| e.into_inner());
     let secs = began.elapsed().as_secs_f64();
-    let _ = std::fs::create_dir_all(&out);
-    for (k, f) in t.failures.iter().chain(&t.compile_failures).enumerate() {
-        let _ = std::fs::write(out.join(format!("diff-{seed}-{k}.txt")), f);
-    }
     println!("models            {}", t.models);
     println!("rejected (E0104)  {}", t.rejected);
-    println!("explicit bounded  {} (verdicts not compared)", t.incomplete);
+    println!(
+        "explicit bounded  {} (20,000 states or 10 s: undecided verdicts not compared)",
+        t.incomplete
+    );
+    println!(
+        "explicit skipped  {} (too wide: over 50,000 input vectors per tick; no verdicts compared)",
+        t.too_wide
+    );
     println!("verdict pairs     {}", t.verdicts);
     println!(
-        "engine unknowns   bmc {}, kind {}, ic3 {} (a limit: not compared)",
-        t.unknown[0], t.unknown[1], t.unknown[2]
+        "engine unknowns   bmc {}, kind {}, ic3 {}, cegar {} (a limit: not compared)",
+        t.unknown[0], t.unknown[1], t.unknown[2], t.unknown[3]
     );
     println!("replays           {}", t.replays);
     println!("C traces equal    {} models", t.c_models);
@@ -248,13 +267,14 @@ fn diff(a: &Args) -> Result<ExitCode, String> {
     );
     let ph = &t.times;
     println!(
-        "phase seconds     lower {:.1}, explicit {:.1}, sat {:.1} (bmc {:.1}, kind {:.1}, ic3 {:.1}), spin {:.1}, codegen {:.1}, gcc {:.1}, rustc {:.1}, run {:.1}",
+        "phase seconds     lower {:.1}, explicit {:.1}, sat {:.1} (bmc {:.1}, kind {:.1}, ic3 {:.1}, cegar {:.1}), spin {:.1}, codegen {:.1}, gcc {:.1}, rustc {:.1}, run {:.1}",
         ph.lower.as_secs_f64(),
         ph.explicit.as_secs_f64(),
         ph.sat.as_secs_f64(),
         ph.engines[0].as_secs_f64(),
         ph.engines[1].as_secs_f64(),
         ph.engines[2].as_secs_f64(),
+        ph.engines[3].as_secs_f64(),
         ph.spin.as_secs_f64(),
         ph.codegen.as_secs_f64(),
         ph.gcc.as_secs_f64(),

@@ -64,6 +64,10 @@ pub(super) struct Flattener<'a, 'd> {
     chain: Vec<String>,
     leaves: usize,
     out: ast::System,
+    /// Spans with an E0101 among `diags[..scanned]` (`endpoint.rs`: one diagnostic per span
+    /// however many copies of a component are flattened, found without rescanning `diags`).
+    unknown_spans: HashSet<Span>,
+    scanned: usize,
 }
 
 fn full(prefix: &str, name: &str) -> String {
@@ -94,6 +98,8 @@ impl<'a, 'd> Flattener<'a, 'd> {
             scopes: Vec::new(),
             chain: Vec::new(),
             leaves: 0,
+            unknown_spans: HashSet::new(),
+            scanned: 0,
             out: ast::System {
                 name: ast::Ident {
                     name: system.to_string(),
