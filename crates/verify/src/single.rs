@@ -96,18 +96,21 @@ pub(crate) fn run_engine(
     let flags: Vec<Arc<AtomicBool>> = (0..n).map(|_| Arc::new(AtomicBool::new(false))).collect();
     let reductions = Reductions::new(bl.props.len());
     let mut got: Vec<Option<(PropResult, Meta, _)>> = vec![None; n];
-    let finished = AtomicBool::new(false);
+    // Dropped when the engine is done, which wakes the watcher at once.
+    let (finished, finished_rx) = std::sync::mpsc::channel::<()>();
     std::thread::scope(|s| {
         // Relay the cancellation and the deadline to the attempt in progress.
-        s.spawn(|| {
-            while !finished.load(Ordering::Relaxed) {
-                if stop.load(Ordering::Relaxed) || deadline.is_some_and(|d| Instant::now() >= d) {
-                    for f in &flags {
-                        f.store(true, Ordering::Relaxed);
-                    }
-                    return;
+        let (flags, stop) = (&flags, &stop);
+        s.spawn(move || loop {
+            if stop.load(Ordering::Relaxed) || deadline.is_some_and(|d| Instant::now() >= d) {
+                for f in flags {
+                    f.store(true, Ordering::Relaxed);
                 }
-                std::thread::sleep(std::time::Duration::from_millis(20));
+                return;
+            }
+            match finished_rx.recv_timeout(std::time::Duration::from_millis(20)) {
+                Err(std::sync::mpsc::RecvTimeoutError::Timeout) => {}
+                _ => return,
             }
         });
         let work = Work {
@@ -119,8 +122,8 @@ pub(crate) fn run_engine(
             deadline,
             max_depth: depth.map(|d| d as usize),
             property_timeout: opts.property_timeout,
-            flags: &flags,
-            stop: &stop,
+            flags,
+            stop,
             reductions: &reductions,
         };
         let order: Vec<usize> = (0..n).collect();
@@ -138,7 +141,7 @@ pub(crate) fn run_engine(
             });
             got[i] = Some((r.result, m, r.invariant));
         });
-        finished.store(true, Ordering::Relaxed);
+        drop(finished);
     });
     let mut results = Vec::new();
     let mut meta = Vec::new();
