@@ -51,8 +51,14 @@ impl Gen {
         } else {
             String::new()
         };
+        let rest = self.action_and_target(&D_ACTIONS, target);
+        format!("on {trig}{guard}{rest};")
+    }
+
+    /// A transition's end: an action drawn from `actions` (60 %) and `-> target` (70 %).
+    pub(super) fn action_and_target(&mut self, actions: &[&str], target: &str) -> String {
         let action = if self.chance(60) {
-            format!("/ {{ {} }} ", D_ACTIONS[self.pick(D_ACTIONS.len())])
+            format!("/ {{ {} }} ", actions[self.pick(actions.len())])
         } else {
             String::new()
         };
@@ -61,7 +67,7 @@ impl Gen {
         } else {
             format!("-> {target}")
         };
-        format!("on {trig}{guard}{action}{tgt};")
+        format!("{action}{tgt}")
     }
 
     /// The counter chart `D(m)` and the component `K(m)` around it, perhaps nested in `W`,

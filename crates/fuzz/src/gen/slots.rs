@@ -36,17 +36,8 @@ impl Gen {
         } else {
             String::new()
         };
-        let action = if self.chance(60) {
-            format!("/ {{ {} }} ", ACTIONS[self.pick(ACTIONS.len())])
-        } else {
-            String::new()
-        };
-        let tgt = if self.chance(30) {
-            String::new()
-        } else {
-            format!("-> {target}")
-        };
-        format!("on {trig}{guard}{action}{tgt};")
+        let rest = self.action_and_target(&ACTIONS, target);
+        format!("on {trig}{guard}{rest};")
     }
 
     /// The interface, its two charts, the slot, its connections, configurations and
