@@ -165,8 +165,13 @@ fn holds(m: &mut Machine, e: u32) -> bool {
 }
 
 /// Replay `vectors`: assumes hold, no error before the last tick, and the last tick shows
-/// the violation (or the witness) of `name`.
+/// the violation (or the witness) of `name`. A `deadlock_free` counterexample ends in the
+/// state it deadlocks in: every tick replays without error and then no input vector
+/// satisfies the `assume`s (checked by enumerating them, independently of the engines).
 pub fn replays(p: &Program, name: &str, kind: PropKind, vectors: &[Vec<i64>]) -> bool {
+    if kind == PropKind::Builtin && name == statecheck_explicit::ltl::DEADLOCK_FREE {
+        return replays_deadlock(p, vectors);
+    }
     let mut m = Machine::new(p);
     for (t, v) in vectors.iter().enumerate() {
         for (k, inp) in p.inputs.iter().enumerate() {
@@ -203,6 +208,66 @@ pub fn replays(p: &Program, name: &str, kind: PropKind, vectors: &[Vec<i64>]) ->
         }
     }
     false
+}
+
+/// The most input vectors [`replays_deadlock`] enumerates; the explicit reference gives
+/// up on wider models ([`MAX_BRANCHING`]), so it never reports a deadlock past this.
+const MAX_DEADLOCK_VECTORS: u128 = 1_000_000;
+
+/// Replay a deadlock: every vector satisfies the `assume`s and steps without error, and in
+/// the state reached no vector of the inputs' ranges satisfies them.
+fn replays_deadlock(p: &Program, vectors: &[Vec<i64>]) -> bool {
+    let mut m = Machine::new(p);
+    for v in vectors {
+        for (k, inp) in p.inputs.iter().enumerate() {
+            let Some(&x) = v.get(k) else { return false };
+            let sl = &p.slots[inp.slot as usize];
+            if x < sl.lo || x > sl.hi {
+                return false;
+            }
+            m.set(inp.slot, x);
+        }
+        if !p.assumes.iter().all(|a| holds(&mut m, *a)) || m.step().is_err() {
+            return false;
+        }
+    }
+    let ranges: Vec<(u32, i64, i64)> = p
+        .inputs
+        .iter()
+        .map(|inp| {
+            let sl = &p.slots[inp.slot as usize];
+            (inp.slot, sl.lo, sl.hi)
+        })
+        .collect();
+    let count = ranges.iter().try_fold(1u128, |n, &(_, lo, hi)| {
+        n.checked_mul((hi as i128 - lo as i128 + 1) as u128)
+            .filter(|&n| n <= MAX_DEADLOCK_VECTORS)
+    });
+    if count.is_none() {
+        return false;
+    }
+    // Odometer over the input ranges: is any vector allowed?
+    let mut current: Vec<i64> = ranges.iter().map(|r| r.1).collect();
+    loop {
+        for (&(slot, _, _), &x) in ranges.iter().zip(&current) {
+            m.set(slot, x);
+        }
+        if p.assumes.iter().all(|a| holds(&mut m, *a)) {
+            return false;
+        }
+        let mut k = 0;
+        loop {
+            let Some(&(_, lo, hi)) = ranges.get(k) else {
+                return true;
+            };
+            if current[k] < hi {
+                current[k] += 1;
+                break;
+            }
+            current[k] = lo;
+            k += 1;
+        }
+    }
 }
 
 /// How long each SAT engine may take on one property. k-induction proves a property only

@@ -195,3 +195,37 @@ fn generated_arrays_loops_and_element_connections_are_accepted() {
         "{arrays} {loops} {star} {checked}"
     );
 }
+
+#[test]
+fn a_deadlock_counterexample_replays_into_a_state_where_no_input_is_allowed() {
+    // Found by the long differential run (seed 1): a `deadlock_free` counterexample was
+    // reported as not replaying because the replay treated it as a runtime error. By hand:
+    // tick 0 enters `A` with n = 0 whatever `go` is; each later tick with `go` true adds 1
+    // to `n`; the assume forbids every input vector once n = 2. So the shortest deadlock is
+    // three ticks, the last two with go = 1, and a trace ending at n = 1 is no deadlock. (`deadlock_free` is checked when the system has a temporal property.)
+    let text = "chart C {\n  input go: bool = false;\n  output n: int[0..3] = 0;\n  initial A;\n  \
+                state A { on [go] / { n += 1; } ; }\n}\n\
+                system S {\n  instance c: C;\n  assume c.n < 2;\n  ltl bounded: G c.n <= 3;\n}\n";
+    let p = statecheck_fuzz::diff::lower(text).expect("the model is valid");
+    let ex = statecheck_explicit::verify(&p, &statecheck_explicit::Options::default(), None)
+        .expect("explicit");
+    let r = ex
+        .results
+        .iter()
+        .find(|r| r.name == "deadlock_free")
+        .expect("deadlock_free is checked");
+    assert_eq!(r.verdict, statecheck_explicit::Verdict::Violated);
+    let cex = r.counterexample.clone().expect("a counterexample");
+    assert_eq!(cex.len(), 3);
+    assert_eq!(cex[1..], [vec![1], vec![1]]);
+    let replays = |v: &[Vec<i64>]| statecheck_fuzz::diff::replays(&p, "deadlock_free", r.kind, v);
+    assert!(replays(&cex));
+    assert!(
+        !replays(&[vec![0], vec![1], vec![0]]),
+        "n = 1 allows inputs"
+    );
+    assert!(
+        !replays(&[vec![0], vec![1], vec![1], vec![0]]),
+        "the fourth tick breaks the assume"
+    );
+}

@@ -3,7 +3,8 @@
 //! ```text
 //! statecheck-fuzz run  [--target all|check|scenario|aiger|fmt] [--executions N] [--seconds T]
 //!                      [--jobs J] [--timeout S] [--seed S] [--out DIR] [--root DIR]
-//! statecheck-fuzz diff [--models N] [--seconds T] [--jobs J] [--seed S] [--out DIR] [--root DIR]
+//! statecheck-fuzz diff [--models N] [--first I] [--seconds T] [--jobs J] [--seed S] [--batch B]
+//!                      [--rust-every K] [--out DIR] [--root DIR]
 //! statecheck-fuzz show --target T --seed S --index I     (the input, on stdout)
 //! ```
 //! Exit code 0 when nothing failed, 1 otherwise, 2 for a usage error.
@@ -47,11 +48,76 @@ fn root(a: &Args) -> PathBuf {
         .unwrap_or_else(|| PathBuf::from("."))
 }
 
+/// The usage text (the module's documentation, without the comment markers).
+const USAGE: &str = "\
+statecheck-fuzz run  [--target all|check|scenario|aiger|fmt] [--executions N] [--seconds T]
+                     [--jobs J] [--timeout S] [--seed S] [--out DIR] [--root DIR]
+statecheck-fuzz diff [--models N] [--first I] [--seconds T] [--jobs J] [--seed S] [--batch B]
+                     [--rust-every K] [--out DIR] [--root DIR]
+statecheck-fuzz show --target T --seed S --index I     (the input, on stdout)
+Exit code 0 when nothing failed, 1 otherwise, 2 for a usage error (docs/reliability.md).";
+
+/// The flags each command reads (with a value, except `--precise`).
+fn known_flags(cmd: &str) -> &'static [&'static str] {
+    match cmd {
+        "run" => &[
+            "--target",
+            "--executions",
+            "--seconds",
+            "--jobs",
+            "--timeout",
+            "--seed",
+            "--out",
+            "--root",
+        ],
+        "diff" => &[
+            "--models",
+            "--first",
+            "--seconds",
+            "--jobs",
+            "--seed",
+            "--batch",
+            "--rust-every",
+            "--out",
+            "--root",
+        ],
+        "show" => &["--target", "--seed", "--index", "--root"],
+        "worker" => &[
+            "--target",
+            "--root",
+            "--seed",
+            "--start",
+            "--stride",
+            "--end",
+            "--precise",
+        ],
+        _ => &[],
+    }
+}
+
 fn main() -> ExitCode {
     let raw: Vec<String> = std::env::args().skip(1).collect();
+    if raw
+        .iter()
+        .any(|a| a == "--help" || a == "-h" || a == "help")
+    {
+        println!("{USAGE}");
+        return ExitCode::SUCCESS;
+    }
     let Some(cmd) = raw.first().cloned() else {
         return usage("missing command");
     };
+    // A misspelt flag would otherwise start a long run with the defaults.
+    let known = known_flags(&cmd);
+    if let Some(bad) = raw
+        .iter()
+        .skip(1)
+        .find(|a| a.starts_with('-') && !known.contains(&a.as_str()))
+    {
+        if !known.is_empty() && bad.parse::<f64>().is_err() {
+            return usage(&format!("unknown option `{bad}` for `{cmd}`"));
+        }
+    }
     let a = Args(raw);
     match main_cmd(&cmd, &a) {
         Ok(code) => code,
@@ -177,6 +243,8 @@ fn diff(a: &Args) -> Result<ExitCode, String> {
     use std::sync::atomic::{AtomicU64, Ordering};
     use std::sync::Mutex;
     let models: u64 = a.num("--models", 1000)?;
+    // The index of the first model: `--first 150 --batch 50 --models 50` repeats batch 3.
+    let first_model: u64 = a.num("--first", 0)?;
     let seconds: Option<f64> = a
         .get("--seconds")
         .map(|s| s.parse().map_err(|_| format!("--seconds: `{s}`")))
@@ -208,7 +276,14 @@ fn diff(a: &Args) -> Result<ExitCode, String> {
                 let first = b * per;
                 let n = per.min(models - first);
                 let rust = rust_every > 0 && b.is_multiple_of(rust_every);
-                let r = diff::batch(seed, first, n, rust, spin, &diff::temp_dir(&format!("b{b}")));
+                let r = diff::batch(
+                    seed,
+                    first_model + first,
+                    n,
+                    rust,
+                    spin,
+                    &diff::temp_dir(&format!("b{b}")),
+                );
                 let mut t = total.lock().unwrap_or_else(|e| e.into_inner());
                 // Failures are saved as they come, so that a run stopped early keeps them.
                 let _ = std::fs::create_dir_all(&out);
