@@ -259,3 +259,21 @@ fn generated_slots_at_the_top_and_inside_components_are_accepted() {
         "{top} {inside} {checked}"
     );
 }
+
+#[test]
+fn help_is_shown_and_an_unknown_option_is_refused() {
+    // `diff --help` once started a default run of 1,000 models; a misspelt flag did too.
+    let exe = env!("CARGO_BIN_EXE_statecheck-fuzz");
+    let help = std::process::Command::new(exe)
+        .args(["diff", "--help"])
+        .output()
+        .expect("run statecheck-fuzz");
+    assert_eq!(help.status.code(), Some(0));
+    assert!(String::from_utf8_lossy(&help.stdout).contains("statecheck-fuzz diff [--models N]"));
+    let bad = std::process::Command::new(exe)
+        .args(["diff", "--modles", "3"])
+        .output()
+        .expect("run statecheck-fuzz");
+    assert_eq!(bad.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&bad.stderr).contains("unknown option `--modles`"));
+}
