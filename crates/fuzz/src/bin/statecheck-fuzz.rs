@@ -109,14 +109,15 @@ fn main() -> ExitCode {
     };
     // A misspelt flag would otherwise start a long run with the defaults.
     let known = known_flags(&cmd);
-    if let Some(bad) = raw
-        .iter()
-        .skip(1)
-        .find(|a| a.starts_with('-') && !known.contains(&a.as_str()))
-    {
-        if !known.is_empty() && bad.parse::<f64>().is_err() {
-            return usage(&format!("unknown option `{bad}` for `{cmd}`"));
-        }
+    // A value may start with '-' (a negative number); an unknown command is refused below.
+    let unknown = raw.iter().skip(1).find(|a| {
+        a.starts_with('-')
+            && !known.contains(&a.as_str())
+            && a.parse::<f64>().is_err()
+            && !known.is_empty()
+    });
+    if let Some(bad) = unknown {
+        return usage(&format!("unknown option `{bad}` for `{cmd}`"));
     }
     let a = Args(raw);
     match main_cmd(&cmd, &a) {
