@@ -244,6 +244,17 @@ async function verifyInPage(browser) {
   assert.strictEqual(await page.evaluate(() => window.studio.run.stop.tick), 3);
   await page.check('#cov');
   await page.screenshot({path: path.join(SHOTS, 'verify.png')});
+  // The same verdicts from CEGAR (IC3 on localization abstractions), with counterexample and
+  // witness of the same shortest lengths, each row decided by `cegar`.
+  await page.selectOption('#engine', 'cegar');
+  await page.click('#verify');
+  await page.waitForFunction(() => {
+    const v = window.studio.verdicts;
+    return v.small && v.full && /done/.test(document.querySelector('#vstate').textContent);
+  }, null, {timeout: 120000});
+  const c = await page.evaluate(() => window.studio.verdicts);
+  assert.deepStrictEqual([c.small.verdict, c.small.depth, c.small.engine], ['violated', 4, 'cegar']);
+  assert.deepStrictEqual([c.full.verdict, c.full.depth, c.full.engine], ['reachable', 11, 'cegar']);
   // The file changes under the page: a broken model shows its diagnostics (line 5: an unknown
   // state), the fixed one (n counts by 2 now) re-applies the replayed ticks: with `go` in
   // ticks 1.. n is 0, 2, 4 after ticks 0..2, so `small` (n < 3) is violated at tick 2 now and

@@ -81,7 +81,7 @@ pub enum Request {
     Verify {
         /// Echoed in the reply.
         id: Option<u64>,
-        /// `auto` (default), `explicit`, `bmc`, `kind` or `ic3`.
+        /// `auto` (default), `explicit`, `bmc`, `kind`, `ic3` or `cegar`.
         engine: Option<String>,
         /// Seconds (30 if absent, at most 300).
         timeout_s: Option<u64>,

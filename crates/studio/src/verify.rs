@@ -17,18 +17,8 @@ pub const DEFAULT_TIMEOUT_S: u64 = 30;
 
 /// The engine named by the page (`auto` when `None`).
 pub fn engine(name: Option<&str>) -> Result<Engine, String> {
-    Ok(match name.unwrap_or("auto") {
-        "auto" => Engine::Auto,
-        "explicit" => Engine::Explicit,
-        "bmc" => Engine::Bmc,
-        "kind" => Engine::Kind,
-        "ic3" => Engine::Ic3,
-        other => {
-            return Err(format!(
-                "unknown engine `{other}` (auto, explicit, bmc, kind, ic3)"
-            ))
-        }
-    })
+    let name = name.unwrap_or("auto");
+    Engine::from_name(name).ok_or_else(|| format!("unknown engine `{name}` ({})", Engine::names()))
 }
 
 /// One result as the page shows it.

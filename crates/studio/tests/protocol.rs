@@ -469,3 +469,57 @@ async fn verify_from_the_page_minimises_the_counterexample() {
     assert_eq!(lines, ["-", "C.go = true", "- * 2"], "{text}");
     h.stop();
 }
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn cegar_from_the_page_proves_and_refutes() {
+    // By hand: `n` counts the ticks with `go` from tick 1 on (tick 0 enters A), saturating at
+    // 9, so `small` (n < 3) is violated first at tick 3: a counterexample of 4 ticks; `capped`
+    // (n <= 9) holds in every state and needs a proof, which BMC cannot give. The page names
+    // the engine `cegar` and every row must say it decided it.
+    let dir = std::env::temp_dir().join(format!("studio-cegar-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).expect("dir");
+    let model = dir.join("count.sc");
+    std::fs::write(
+        &model,
+        "chart C {\n  input go: bool = false;\n  output n: int[0..9] = 0;\n  initial A;\n  state A { during { if go { n = min(9, n + 1); } } }\n  invariant small: n < 3;\n  invariant capped: n <= 9;\n}\n",
+    )
+    .expect("write");
+    let h = start(model.to_str().expect("path"));
+    let (mut ws, hello) = connect(&h).await;
+    assert_eq!(hello["type"], "model", "{hello}");
+    let started = call(&mut ws, json!({"op": "verify", "engine": "cegar"})).await;
+    assert_eq!(started["type"], "verify_started", "{started}");
+    let done = loop {
+        let m = next(&mut ws).await;
+        if m["type"] == "verify_done" {
+            break m;
+        }
+    };
+    let results = done["results"].as_array().expect("results");
+    let row = |name: &str| {
+        results
+            .iter()
+            .find(|r| r["name"] == name)
+            .cloned()
+            .unwrap_or_else(|| panic!("no row for {name}: {done}"))
+    };
+    let small = row("small");
+    assert_eq!(
+        (&small["verdict"], &small["depth"], &small["engine"]),
+        (&json!("violated"), &json!(4), &json!("cegar")),
+        "{small}"
+    );
+    assert!(small["scenario"].is_string(), "{small}");
+    let capped = row("capped");
+    assert_eq!(
+        (&capped["verdict"], &capped["engine"]),
+        (&json!("proved"), &json!("cegar")),
+        "{capped}"
+    );
+    // A name that is no engine is refused with the list of those that are.
+    let bad = call(&mut ws, json!({"op": "verify", "engine": "pdr"})).await;
+    assert_eq!(bad["type"], "error", "{bad}");
+    let message = bad["message"].as_str().expect("message");
+    assert!(message.contains("ic3, cegar"), "{message}");
+    h.stop();
+}

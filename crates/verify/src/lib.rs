@@ -62,6 +62,26 @@ impl Engine {
         }
     }
 
+    /// Every engine, in the order a user is offered them (the portfolio first).
+    pub const ALL: [Engine; 6] = [
+        Engine::Auto,
+        Engine::Explicit,
+        Engine::Bmc,
+        Engine::Kind,
+        Engine::Ic3,
+        Engine::Cegar,
+    ];
+
+    /// The engine whose option word is `name` (the inverse of [`Engine::as_str`]).
+    pub fn from_name(name: &str) -> Option<Engine> {
+        Engine::ALL.into_iter().find(|e| e.as_str() == name)
+    }
+
+    /// The option words of every engine, comma-separated (for an error message).
+    pub fn names() -> String {
+        Engine::ALL.map(Engine::as_str).join(", ")
+    }
+
     /// The SAT engine, for the four that are one.
     pub fn symbolic(self) -> Option<statecheck_symbolic::check::Engine> {
         use statecheck_symbolic::check::Engine as S;
