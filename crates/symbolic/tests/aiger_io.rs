@@ -193,3 +193,25 @@ fn justice_and_fairness_sections() {
     // A file that ends inside the justice section is an error.
     assert!(parse(b"aag 1 1 0 0 0 0 0 1 0\n2\n2\n2\n").is_err());
 }
+
+#[test]
+fn a_symbol_line_starting_with_a_multibyte_character_is_skipped_not_a_panic() {
+    // Found by the `aiger` fuzz target (seed 20261203, input 675982): the symbol line of input
+    // 0 lost its `i0` to the two-byte `ð`; the reader split the line's first byte off and
+    // panicked inside the character. By the format, a symbol line is a kind letter (i, l, b,
+    // j) and an index, so that line names nothing: input 0 stays unnamed, the others keep
+    // their names, and the circuit (4 inputs, bad output = literal 0) is read as before.
+    let bytes = b"aag 4 4 0 0 0 1 0\n2\n4\n6\n8\n0\n\xc3\xb0 Choice.x[0]\ni1 Choice.x[1]\ni2 Choice.x[3]\ni3 Choice.x[3]\nb0 no_range_overflow\nc\nseed\n";
+    let g = parse(bytes).expect("a valid file with one meaningless symbol line");
+    assert_eq!(g.inputs.len(), 4);
+    assert_eq!(
+        g.input_names,
+        [
+            None,
+            Some("Choice.x[1]".to_string()),
+            Some("Choice.x[3]".to_string()),
+            Some("Choice.x[3]".to_string())
+        ]
+    );
+    assert_eq!(g.bad_names, [Some("no_range_overflow".to_string())]);
+}

@@ -290,15 +290,18 @@ pub fn parse(bytes: &[u8]) -> Result<Aig, AigerError> {
         let Some((k, name)) = t.split_once(' ') else {
             continue;
         };
-        let (kind, idx) = k.split_at(1.min(k.len()));
-        let Ok(idx) = idx.parse::<usize>() else {
+        // The kind is the line's first character, which need not be one byte long.
+        let Some(kind) = k.chars().next() else {
+            continue;
+        };
+        let Ok(idx) = k[kind.len_utf8()..].parse::<usize>() else {
             continue;
         };
         let slot = match kind {
-            "i" => names_i.get_mut(idx),
-            "l" => names_l.get_mut(idx),
-            "b" => names_b.get_mut(idx),
-            "j" => names_j.get_mut(idx),
+            'i' => names_i.get_mut(idx),
+            'l' => names_l.get_mut(idx),
+            'b' => names_b.get_mut(idx),
+            'j' => names_j.get_mut(idx),
             _ => None,
         };
         if let Some(s) = slot {
