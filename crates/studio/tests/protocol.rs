@@ -22,6 +22,28 @@ fn fam_initial() -> Value {
     ])
 }
 
+/// Ask the page's server to verify with `engine` and wait for the run's end: the
+/// `verify_done` message, with every result.
+async fn verify_on_the_page(ws: &mut Ws, engine: &str) -> Value {
+    let started = call(ws, json!({"op": "verify", "engine": engine})).await;
+    assert_eq!(started["type"], "verify_started", "{started}");
+    loop {
+        let m = next(ws).await;
+        if m["type"] == "verify_done" {
+            break m;
+        }
+    }
+}
+
+/// A model file `name` with `text` in a directory of its own, `tag` and the process's id.
+fn temp_model(tag: &str, name: &str, text: &str) -> std::path::PathBuf {
+    let dir = std::env::temp_dir().join(format!("{tag}-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).expect("dir");
+    let model = dir.join(name);
+    std::fs::write(&model, text).expect("write");
+    model
+}
+
 fn sorted(v: &Value) -> Vec<String> {
     let mut x: Vec<String> = v
         .as_array()
@@ -404,14 +426,7 @@ async fn times_come_with_the_ticks_when_the_model_declares_a_tick() {
         (&json!(118.75), &json!("118.75"))
     );
     // Verify from the page: the counterexample is decided at tick 95, 118.75 s.
-    let started = call(&mut ws, json!({"op": "verify", "engine": "explicit"})).await;
-    assert_eq!(started["type"], "verify_started", "{started}");
-    let done = loop {
-        let m = next(&mut ws).await;
-        if m["type"] == "verify_done" {
-            break m;
-        }
-    };
+    let done = verify_on_the_page(&mut ws, "explicit").await;
     let r = done["results"]
         .as_array()
         .expect("results")
@@ -434,25 +449,11 @@ async fn verify_from_the_page_minimises_the_counterexample() {
     // matter. Minimised (as `statecheck verify` does), the scenario keeps every input at its
     // initial value except `go` from tick 1 on: `-`, `C.go = true`, `- * 2`. (The explicit
     // engine's raw trace sets `x`, a choice among equals; the page must not show it.)
-    let dir = std::env::temp_dir().join(format!("studio-minimise-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).expect("dir");
-    let model = dir.join("noise.sc");
-    std::fs::write(
-        &model,
-        "chart C {\n  input go: bool = false;\n  input x: int[0..3] = 2;\n  output n: int[0..9] = 0;\n  initial A;\n  state A { during { if go { n = min(9, n + 1); } } }\n  invariant small: n < 3;\n}\n",
-    )
-    .expect("write");
+    let model = temp_model("studio-minimise", "noise.sc", "chart C {\n  input go: bool = false;\n  input x: int[0..3] = 2;\n  output n: int[0..9] = 0;\n  initial A;\n  state A { during { if go { n = min(9, n + 1); } } }\n  invariant small: n < 3;\n}\n");
     let h = start(model.to_str().expect("path"));
     let (mut ws, hello) = connect(&h).await;
     assert_eq!(hello["type"], "model", "{hello}");
-    let started = call(&mut ws, json!({"op": "verify", "engine": "explicit"})).await;
-    assert_eq!(started["type"], "verify_started", "{started}");
-    let done = loop {
-        let m = next(&mut ws).await;
-        if m["type"] == "verify_done" {
-            break m;
-        }
-    };
+    let done = verify_on_the_page(&mut ws, "explicit").await;
     let r = done["results"]
         .as_array()
         .expect("results")
@@ -476,25 +477,11 @@ async fn cegar_from_the_page_proves_and_refutes() {
     // 9, so `small` (n < 3) is violated first at tick 3: a counterexample of 4 ticks; `capped`
     // (n <= 9) holds in every state and needs a proof, which BMC cannot give. The page names
     // the engine `cegar` and every row must say it decided it.
-    let dir = std::env::temp_dir().join(format!("studio-cegar-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).expect("dir");
-    let model = dir.join("count.sc");
-    std::fs::write(
-        &model,
-        "chart C {\n  input go: bool = false;\n  output n: int[0..9] = 0;\n  initial A;\n  state A { during { if go { n = min(9, n + 1); } } }\n  invariant small: n < 3;\n  invariant capped: n <= 9;\n}\n",
-    )
-    .expect("write");
+    let model = temp_model("studio-cegar", "count.sc", "chart C {\n  input go: bool = false;\n  output n: int[0..9] = 0;\n  initial A;\n  state A { during { if go { n = min(9, n + 1); } } }\n  invariant small: n < 3;\n  invariant capped: n <= 9;\n}\n");
     let h = start(model.to_str().expect("path"));
     let (mut ws, hello) = connect(&h).await;
     assert_eq!(hello["type"], "model", "{hello}");
-    let started = call(&mut ws, json!({"op": "verify", "engine": "cegar"})).await;
-    assert_eq!(started["type"], "verify_started", "{started}");
-    let done = loop {
-        let m = next(&mut ws).await;
-        if m["type"] == "verify_done" {
-            break m;
-        }
-    };
+    let done = verify_on_the_page(&mut ws, "cegar").await;
     let results = done["results"].as_array().expect("results");
     let row = |name: &str| {
         results
