@@ -35,6 +35,17 @@ async fn verify_on_the_page(ws: &mut Ws, engine: &str) -> Value {
     }
 }
 
+/// The result of property `name` in a `verify_done` message.
+fn result_row(done: &Value, name: &str) -> Value {
+    done["results"]
+        .as_array()
+        .expect("results")
+        .iter()
+        .find(|r| r["name"] == name)
+        .cloned()
+        .unwrap_or_else(|| panic!("no result for {name}: {done}"))
+}
+
 /// A model file `name` with `text` in a directory of its own, `tag` and the process's id.
 fn temp_model(tag: &str, name: &str, text: &str) -> std::path::PathBuf {
     let dir = std::env::temp_dir().join(format!("{tag}-{}", std::process::id()));
@@ -427,13 +438,7 @@ async fn times_come_with_the_ticks_when_the_model_declares_a_tick() {
     );
     // Verify from the page: the counterexample is decided at tick 95, 118.75 s.
     let done = verify_on_the_page(&mut ws, "explicit").await;
-    let r = done["results"]
-        .as_array()
-        .expect("results")
-        .iter()
-        .find(|r| r["name"] == "never_at_end")
-        .cloned()
-        .expect("never_at_end");
+    let r = result_row(&done, "never_at_end");
     assert_eq!(r["verdict"], "violated");
     assert_eq!(
         (&r["tick"], &r["time_text"]),
@@ -454,13 +459,7 @@ async fn verify_from_the_page_minimises_the_counterexample() {
     let (mut ws, hello) = connect(&h).await;
     assert_eq!(hello["type"], "model", "{hello}");
     let done = verify_on_the_page(&mut ws, "explicit").await;
-    let r = done["results"]
-        .as_array()
-        .expect("results")
-        .iter()
-        .find(|r| r["name"] == "small")
-        .cloned()
-        .expect("small");
+    let r = result_row(&done, "small");
     assert_eq!(
         (&r["verdict"], &r["depth"]),
         (&json!("violated"), &json!(4))
@@ -482,22 +481,14 @@ async fn cegar_from_the_page_proves_and_refutes() {
     let (mut ws, hello) = connect(&h).await;
     assert_eq!(hello["type"], "model", "{hello}");
     let done = verify_on_the_page(&mut ws, "cegar").await;
-    let results = done["results"].as_array().expect("results");
-    let row = |name: &str| {
-        results
-            .iter()
-            .find(|r| r["name"] == name)
-            .cloned()
-            .unwrap_or_else(|| panic!("no row for {name}: {done}"))
-    };
-    let small = row("small");
+    let small = result_row(&done, "small");
     assert_eq!(
         (&small["verdict"], &small["depth"], &small["engine"]),
         (&json!("violated"), &json!(4), &json!("cegar")),
         "{small}"
     );
     assert!(small["scenario"].is_string(), "{small}");
-    let capped = row("capped");
+    let capped = result_row(&done, "capped");
     assert_eq!(
         (&capped["verdict"], &capped["engine"]),
         (&json!("proved"), &json!("cegar")),
