@@ -83,17 +83,17 @@ pub fn emit(p: &Problem, sup: &Supervisor, source: &str) -> String {
             let ts: Vec<(u32, u32)> = (0..a.locs.len() as u32)
                 .filter_map(|l| a.step(l, e).map(|t| (l, t)))
                 .collect();
-            let branches: Vec<String> = ts
+            let cases: Vec<(String, String)> = ts
                 .iter()
                 .map(|(s, t)| {
-                    format!(
-                        "if at_{0} == Loc_{0}.{1} {{ at_{0} = Loc_{0}.{2}; }}",
-                        a.name, a.locs[*s as usize], a.locs[*t as usize]
+                    (
+                        format!("at_{0} == Loc_{0}.{1}", a.name, a.locs[*s as usize]),
+                        format!("at_{0} = Loc_{0}.{1};", a.name, a.locs[*t as usize]),
                     )
                 })
                 .collect();
-            if !branches.is_empty() {
-                let _ = writeln!(o, "                {}", branches.join(" else "));
+            if !cases.is_empty() {
+                let _ = writeln!(o, "                {}", branch_tree(&cases));
             }
         }
         o.push_str("            }\n");
@@ -205,6 +205,34 @@ pub fn emit(p: &Problem, sup: &Supervisor, source: &str) -> String {
     let _ = writeln!(o, "    reachable all_marked: {marked};");
     o.push_str("}\n");
     o
+}
+
+/// Most cases written as one flat `if … else if …` chain by [`branch_tree`].
+const FLAT_BRANCHES: usize = 16;
+
+/// `if c1 { b1 } else if c2 { b2 } …` for mutually exclusive conditions (one automaton's
+/// source locations), nested so that the parser's limits hold at any size: more than
+/// [`FLAT_BRANCHES`] cases are split in halves, `if (conditions of the first half) { … } else
+/// { … }`, so n cases nest about log₂(n / 16) levels plus one flat chain, instead of n (an
+/// automaton with more than 256 transitions on one event used to give an `else if` chain
+/// deeper than E0013 allows). The conditions of a half are balanced by [`chain`]. Each case
+/// is tested once per level, so the text is O(n log n).
+fn branch_tree(cases: &[(String, String)]) -> String {
+    if cases.len() <= FLAT_BRANCHES {
+        return cases
+            .iter()
+            .map(|(c, b)| format!("if {c} {{ {b} }}"))
+            .collect::<Vec<_>>()
+            .join(" else ");
+    }
+    let (first, second) = cases.split_at(cases.len() / 2);
+    let conds: Vec<String> = first.iter().map(|(c, _)| c.clone()).collect();
+    format!(
+        "if {} {{ {} }} else {{ {} }}",
+        paren(&chain(&conds, " || ")),
+        branch_tree(first),
+        branch_tree(second)
+    )
 }
 
 /// `s` as one parenthesised group: unchanged if its first `(` closes at its very end, else

@@ -164,3 +164,64 @@ fn guard_building_stops_at_the_limit() {
         Ok(_) => panic!("the raised stop flag was ignored"),
     }
 }
+
+/// A ring of `L` = 600 locations: uncontrollable `adv` moves l → l+1 (mod L), controllable
+/// `home` moves every location to 0; every location marked, no requirement.
+///
+/// By hand: all L locations are reachable (adv) and marked, nothing is forbidden, so the
+/// supervisor is the plant: L states, 2·L transitions (one `adv` and one `home` each).
+/// The emitted supervisor updates the mirror `at_ring` on each event with one branch per
+/// source location: 600 mutually exclusive cases, which used to be one `else if` chain 600
+/// levels deep — more nesting than the parser accepts (E0013 above 256).
+#[test]
+fn an_automaton_with_hundreds_of_transitions_on_one_event_reloads() {
+    const L: u32 = 600;
+    let events = vec![
+        Event {
+            name: "adv".into(),
+            controllable: false,
+        },
+        Event {
+            name: "home".into(),
+            controllable: true,
+        },
+    ];
+    let n = events.len();
+    let mut next = vec![NONE; L as usize * n];
+    for l in 0..L {
+        next[(l as usize) * n] = (l + 1) % L;
+        next[(l as usize) * n + 1] = 0;
+    }
+    let p = Problem {
+        name: "Ring".into(),
+        events,
+        automata: vec![Automaton {
+            name: "ring".into(),
+            chart: "Ring".into(),
+            kind: Kind::Plant,
+            locs: (0..L).map(|l| format!("L{l}")).collect(),
+            marked: vec![true; L as usize],
+            initial: 0,
+            alphabet: vec![0, 1],
+            next,
+            n_events: n,
+        }],
+        never: Vec::new(),
+        needs: Vec::new(),
+    };
+    let s = synthesize(&p, Engine::Explicit).expect("synthesis");
+    let Outcome::Supervisor(sup) = s.outcome else {
+        panic!("no supervisor");
+    };
+    assert_eq!((sup.states, sup.transitions), (600, 1200));
+    let text = emit::emit(&p, &sup, "ring");
+    let (file, diags) = statecheck_syntax::parse(&text);
+    assert!(diags.is_empty(), "{:?}", &diags[..diags.len().min(3)]);
+    let (model, diags) = statecheck_model::check(&file);
+    assert!(!diags.iter().any(|d| d.is_error()), "{diags:?}");
+    let sys = model.systems.iter().find(|s| !s.implicit).expect("system");
+    let program = statecheck_ir::lower(&model, sys).expect("lower");
+    let r = check::check(&p, &model, &program).expect("check runs");
+    assert!(r.violations.is_empty(), "{:?}", r.violations);
+    assert_eq!(r.plant_states, 600);
+}
