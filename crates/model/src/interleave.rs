@@ -116,6 +116,7 @@ fn add(s: &mut ast::System, chart: &str) {
             count: None,
             chart: ident(chart),
             args: Vec::new(),
+            renames: Vec::new(),
             span: at,
         },
     );

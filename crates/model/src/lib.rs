@@ -262,6 +262,7 @@ pub fn check(file: &ast::File) -> (Model, Vec<Diagnostic>) {
                 name: c.name.name.clone(),
                 chart: id as ChartId,
                 index: None,
+                renames: Vec::new(),
                 span: c.name.span,
             }],
             connections: Vec::new(),

@@ -390,7 +390,22 @@ pub struct Instance {
     pub chart: ChartId,
     /// Its index when it is an element of an instance array (`name[index]`).
     pub index: Option<u32>,
+    /// Event renames (`instance p1: Phil { take -> take1; }`): the chart's event variable and
+    /// its name in synthesis. Only synthesis reads them (events synchronise by name there);
+    /// the tick semantics is unchanged.
+    pub renames: Vec<EventRename>,
     /// Where it was declared.
+    pub span: Span,
+}
+
+/// One checked entry of an instance's rename block.
+#[derive(Clone, Debug)]
+pub struct EventRename {
+    /// The chart's event (a variable declared `controllable event` or `uncontrollable event`).
+    pub var: VarId,
+    /// Its name for this instance.
+    pub name: String,
+    /// Where the entry was written.
     pub span: Span,
 }
 

@@ -54,10 +54,12 @@ pub(crate) fn check_system(
         let first = instances.len() as u32;
         let len = match &inst.count {
             None => {
+                let renames = renames(ck, inst, charts.get(chart as usize));
                 instances.push(Instance {
                     name: inst.name.name.clone(),
                     chart,
                     index: None,
+                    renames,
                     span: inst.name.span,
                 });
                 None
@@ -75,11 +77,23 @@ pub(crate) fn check_system(
                     );
                 }
                 let n = n.clamp(1, 4096) as u32;
+                if let Some(r) = inst.renames.first() {
+                    ck.sink.push(
+                        Diagnostic::error(
+                            "E0191",
+                            "an instance array cannot rename events",
+                            r.span,
+                        )
+                        .with_label("every element would get the same names")
+                        .with_hint("declare the elements one by one, each with its own renames"),
+                    );
+                }
                 for i in 0..n {
                     instances.push(Instance {
                         name: format!("{}[{i}]", inst.name.name),
                         chart,
                         index: Some(i),
+                        renames: Vec::new(),
                         span: inst.name.span,
                     });
                 }
@@ -118,6 +132,7 @@ pub(crate) fn check_system(
             name: name.clone(),
             chart: id,
             index: None,
+            renames: Vec::new(),
             span: s.name.span,
         });
         groups.insert(
@@ -546,4 +561,71 @@ fn interleaving(
         unit,
         units,
     })
+}
+
+/// The checked renames of a (non-array) instance of `chart`: each renamed name must be one of
+/// the chart's events (`controllable event`/`uncontrollable event`), renamed once (E0190).
+fn renames(
+    ck: &mut ExprChecker,
+    inst: &ast::Instance,
+    chart: Option<&Chart>,
+) -> Vec<crate::model::EventRename> {
+    let mut out: Vec<crate::model::EventRename> = Vec::new();
+    let Some(chart) = chart else {
+        return out;
+    };
+    for r in &inst.renames {
+        let var = chart
+            .vars
+            .iter()
+            .position(|v| v.name == r.event.name && v.control.is_some());
+        let Some(var) = var else {
+            let events: Vec<&str> = chart
+                .vars
+                .iter()
+                .filter(|v| v.control.is_some())
+                .map(|v| v.name.as_str())
+                .collect();
+            let hint = if events.is_empty() {
+                format!(
+                    "`{}` declares no `controllable event` or `uncontrollable event`; renames are for synthesis",
+                    chart.name
+                )
+            } else {
+                format!("its events: {}", events.join(", "))
+            };
+            ck.sink.push(
+                Diagnostic::error(
+                    "E0190",
+                    format!(
+                        "`{}` is not an event of chart `{}`",
+                        r.event.name, chart.name
+                    ),
+                    r.event.span,
+                )
+                .with_label("not a synthesis event of the chart")
+                .with_hint(hint),
+            );
+            continue;
+        };
+        let var = var as crate::model::VarId;
+        if let Some(first) = out.iter().find(|o| o.var == var) {
+            ck.sink.push(
+                Diagnostic::error(
+                    "E0190",
+                    format!("event `{}` is renamed twice", r.event.name),
+                    r.event.span,
+                )
+                .with_label("second rename")
+                .with_secondary(first.span, "first renamed here"),
+            );
+            continue;
+        }
+        out.push(crate::model::EventRename {
+            var,
+            name: r.to.name.clone(),
+            span: r.span,
+        });
+    }
+    out
 }

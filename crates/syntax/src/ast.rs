@@ -718,7 +718,22 @@ pub struct Instance {
     pub chart: Ident,
     /// The arguments of a parameterised chart, `: Sensor(0, hi = 5)`, in order.
     pub args: Vec<Arg>,
+    /// Event renames of a synthesis instance, `: Phil { take -> take1; }`, in order
+    /// (docs/synthesis.md, "Event renaming").
+    pub renames: Vec<Rename>,
     /// Whole declaration.
+    pub span: Span,
+}
+
+/// `event -> name;` in an instance's rename block: the chart's event `event` is known as
+/// `name` in synthesis (where events synchronise by name).
+#[derive(Clone, Debug, PartialEq)]
+pub struct Rename {
+    /// The chart's event.
+    pub event: Ident,
+    /// Its name for this instance.
+    pub to: Ident,
+    /// The whole entry.
     pub span: Span,
 }
 

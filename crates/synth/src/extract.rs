@@ -98,7 +98,20 @@ pub fn extract(model: &Model, system: &System) -> Result<Problem, Vec<Diagnostic
                 continue;
             }
         };
-        for v in &chart.vars {
+        // Each event's name in synthesis: the chart's, or the instance's rename of it.
+        let names: Vec<(String, Span)> = chart
+            .vars
+            .iter()
+            .enumerate()
+            .map(
+                |(vi, v)| match inst.renames.iter().find(|r| r.var as usize == vi) {
+                    Some(r) => (r.name.clone(), r.span),
+                    None => (v.name.clone(), v.span),
+                },
+            )
+            .collect();
+        for (v, (name, span)) in chart.vars.iter().zip(&names) {
+            let (name, span) = (name, *span);
             let Some(control) = v.control else {
                 cx.err(
                     "E0703",
@@ -108,40 +121,40 @@ pub fn extract(model: &Model, system: &System) -> Result<Problem, Vec<Diagnostic
                 continue;
             };
             let controllable = control == Control::Controllable;
-            match cx.event_ids.get(&v.name) {
+            match cx.event_ids.get(name) {
                 Some(&(id, first)) => {
                     if cx.events[id as usize].controllable != controllable {
                         cx.diags.push(
                             Diagnostic::error(
                                 "E0704",
                                 format!(
-                                    "event `{}` is declared both controllable and uncontrollable",
-                                    v.name
+                                    "event `{name}` is declared both controllable and uncontrollable"
                                 ),
-                                v.span,
+                                span,
                             )
                             .with_secondary(first, "first declared here"),
                         );
                     }
                 }
                 None => {
-                    if v.name == "none" {
+                    if name == "none" {
                         cx.err(
                             "E0705",
                             "`none` is reserved (it means \"no event\" in the emitted chart)",
-                            v.span,
+                            span,
                         );
                     }
                     let id = cx.events.len() as EventId;
-                    cx.event_ids.insert(v.name.clone(), (id, v.span));
+                    cx.event_ids.insert(name.clone(), (id, span));
                     cx.events.push(Event {
-                        name: v.name.clone(),
+                        name: name.clone(),
                         controllable,
                     });
                 }
             }
         }
-        inst_charts.push((i as u32, &inst.name, chart, kind));
+        let names: Vec<String> = names.into_iter().map(|(n, _)| n).collect();
+        inst_charts.push((i as u32, &inst.name, chart, kind, names));
     }
     // Connections do not relabel events (they synchronise by name); a connection would be
     // silently ignored, so it is refused. After the flattening, a component's input port
@@ -154,7 +167,7 @@ pub fn extract(model: &Model, system: &System) -> Result<Problem, Vec<Diagnostic
                 c.span,
             )
             .with_hint(
-                "declare the event under the same name in every chart that shares it; a chart type cannot be instantiated with renamed events",
+                "declare the event under the same name in every chart that shares it, or rename a chart's events per instance: `instance p1: Phil { take -> take1; }`",
             ),
         );
     }
@@ -162,8 +175,8 @@ pub fn extract(model: &Model, system: &System) -> Result<Problem, Vec<Diagnostic
     let n_events = cx.events.len();
     let mut automata = Vec::new();
     let mut of_instance: HashMap<u32, u32> = HashMap::new();
-    for (i, name, chart, kind) in inst_charts {
-        if let Some(a) = automaton(&mut cx, name, chart, kind, n_events) {
+    for (i, name, chart, kind, names) in inst_charts {
+        if let Some(a) = automaton(&mut cx, name, chart, &names, kind, n_events) {
             of_instance.insert(i, automata.len() as u32);
             automata.push(a);
         }
@@ -221,11 +234,13 @@ pub fn extract(model: &Model, system: &System) -> Result<Problem, Vec<Diagnostic
     })
 }
 
-/// The automaton of one instance of a flat plant or requirement chart.
+/// The automaton of one instance of a flat plant or requirement chart; `names` gives each of
+/// the chart's variables its event name in synthesis (renames applied).
 fn automaton(
     cx: &mut Ctx,
     name: &str,
     chart: &Chart,
+    names: &[String],
     kind: Kind,
     n_events: usize,
 ) -> Option<Automaton> {
@@ -264,7 +279,9 @@ fn automaton(
     let mut alphabet: Vec<EventId> = chart
         .vars
         .iter()
-        .filter_map(|v| cx.event_ids.get(&v.name).map(|(i, _)| *i))
+        .zip(names)
+        .filter(|(v, _)| v.control.is_some())
+        .filter_map(|(_, n)| cx.event_ids.get(n).map(|(i, _)| *i))
         .collect();
     alphabet.sort_unstable();
     alphabet.dedup();
@@ -289,7 +306,7 @@ fn automaton(
             let ev = match t.trigger {
                 Trigger::Event(v) => {
                     let var = &chart.vars[v as usize];
-                    match cx.event_ids.get(&var.name) {
+                    match names.get(v as usize).and_then(|n| cx.event_ids.get(n)) {
                         Some((id, _)) if var.control.is_some() && alphabet.contains(id) => {
                             Some(*id)
                         }

@@ -276,7 +276,20 @@ impl Printer<'_> {
                 .map(|e| format!("[{}]", self.expr(e)))
                 .unwrap_or_default();
             let args = self.args(&i.args);
-            let t = format!("instance {}{count}: {}{args};", i.name.name, i.chart.name);
+            let end = if i.renames.is_empty() {
+                ";".to_string()
+            } else {
+                let rs: Vec<String> = i
+                    .renames
+                    .iter()
+                    .map(|r| format!("{} -> {};", r.event.name, r.to.name))
+                    .collect();
+                format!(" {{ {} }}", rs.join(" "))
+            };
+            let t = format!(
+                "instance {}{count}: {}{args}{end}",
+                i.name.name, i.chart.name
+            );
             ms.push((i.span.start, SysMember::Line(i.span, t)));
         }
         for c in &s.connections {

@@ -4,8 +4,8 @@ use super::body::is_body_kw;
 use super::{is_chart_elem_kw, is_item_kw, is_system_kw, Failed, PResult, Parser};
 use crate::ast::{
     Assume, Chart, ConstDecl, Control, EnumDecl, Expr, File, FnDecl, Ident, Instance, Item,
-    OrderDecl, Param, Property, PropertyKind, RequirementKind, StateBody, StateRequirement, System,
-    TickDecl, VarDecl, VarKind,
+    OrderDecl, Param, Property, PropertyKind, Rename, RequirementKind, StateBody, StateRequirement,
+    System, TickDecl, VarDecl, VarKind,
 };
 use crate::lexer::{Kw, Tok};
 use statecheck_base::{Diagnostic, Span};
@@ -718,7 +718,7 @@ impl Parser<'_> {
         }
     }
 
-    /// `'instance' IDENT [ '[' expr ']' ] ':' IDENT [ '(' args ')' ] ';'`
+    /// `'instance' IDENT [ '[' expr ']' ] ':' IDENT [ '(' args ')' ] ( ';' | renames [ ';' ] )`
     fn instance(&mut self) -> PResult<Instance> {
         let start = self.bump().span;
         let name = self.expect_ident("an instance name after `instance`")?;
@@ -738,14 +738,43 @@ impl Parser<'_> {
         } else {
             Vec::new()
         };
-        self.expect_semi("after the instance declaration");
+        let renames = if self.at(Tok::LBrace) {
+            let renames = self.renames()?;
+            self.eat(Tok::Semi);
+            renames
+        } else {
+            self.expect_semi("after the instance declaration");
+            Vec::new()
+        };
         Ok(Instance {
             name,
             count,
             chart,
             args,
+            renames,
             span: self.span_from(start),
         })
+    }
+
+    /// `'{' { IDENT '->' IDENT ';' } '}'`: an instance's event renames.
+    fn renames(&mut self) -> PResult<Vec<Rename>> {
+        let open = self.bump().span;
+        let mut renames = Vec::new();
+        loop {
+            if self.at_list_end(open, "the instance's renames", is_item_kw) {
+                return Ok(renames);
+            }
+            let start = self.tok().span;
+            let event = self.expect_ident("the event to rename (`take -> take1;`)")?;
+            self.expect(Tok::Arrow, "between the event and its new name")?;
+            let to = self.expect_ident("the event's new name after `->`")?;
+            self.expect_semi("after the rename");
+            renames.push(Rename {
+                event,
+                to,
+                span: self.span_from(start),
+            });
+        }
     }
 
     /// `'connect' path '->' path ';'`
