@@ -489,6 +489,29 @@ fn fam_liveness_lassos_replay() {
         text.contains("`recalibrates_after_failure` violated"),
         "{text}"
     );
+    // Master + N FAMs, N = 2..5: the stall lasso built by hand for each bus (the scenarios'
+    // comments give the construction), replayed.
+    for n in 2..=5 {
+        let out = Command::new(BIN)
+            .args([
+                "sim",
+                &format!("{root}/examples/fam/liveness/fam_live{n}.sc"),
+                "--system",
+                &format!("FamLive{n}"),
+                "--quiet",
+                "--scenario",
+                &scn(&format!("stall_never_acknowledged{n}")),
+            ])
+            .output()
+            .expect("sim runs");
+        let text = String::from_utf8_lossy(&out.stdout).into_owned()
+            + &String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(4), "N = {n}: {text}");
+        assert!(
+            text.contains("`stall_procedure_completes` violated"),
+            "N = {n}: {text}"
+        );
+    }
     let dir = std::env::temp_dir().join(format!("statecheck-famlasso-{}", std::process::id()));
     std::fs::create_dir_all(dir.join("liveness")).expect("dir");
     // The copy imports the closed loop (and through it examples/fam/lib/) where it is.
