@@ -15,6 +15,11 @@
 //! backward search that reads ahead in its queue; each later one recomputes only the states
 //! that reach a state removed since.
 //! Guards are derived afterwards, only when asked ([`crate::guards`]).
+//!
+//! With two threads, exploration is a pipeline ([`pipeline`]): one thread computes
+//! successors, the other numbers them.
+
+mod pipeline;
 
 use crate::error::Error;
 use crate::limits::Budget;
@@ -247,6 +252,122 @@ fn plant_masks(p: &Problem) -> (Vec<(usize, Vec<u64>)>, usize) {
     (masks, ew)
 }
 
+/// What a state's successors depend on besides the state, computed once per run and shared
+/// by the exploring threads.
+struct Rules {
+    /// Per event, the automata that have it ([`participants`]).
+    parts: Vec<Vec<(usize, bool)>>,
+    /// Per event: uncontrollable.
+    uncontrollable: Vec<bool>,
+    /// Per event, the `needs` requirements on it.
+    needs_of: Vec<Vec<usize>>,
+    /// [`plant_masks`].
+    masks: Vec<(usize, Vec<u64>)>,
+    ew: usize,
+}
+
+impl Rules {
+    fn new(p: &Problem) -> Rules {
+        let (masks, ew) = plant_masks(p);
+        Rules {
+            parts: participants(p),
+            uncontrollable: p.events.iter().map(|e| !e.controllable).collect(),
+            needs_of: (0..p.events.len())
+                .map(|e| {
+                    (0..p.needs.len())
+                        .filter(|&i| p.needs[i].event as usize == e)
+                        .collect()
+                })
+                .collect(),
+            masks,
+            ew,
+        }
+    }
+}
+
+/// Computes the successors of product states (one per exploring thread: it owns its
+/// scratch space).
+struct Expander<'a> {
+    p: &'a Problem,
+    pk: &'a Packing,
+    rules: &'a Rules,
+    locs: Vec<u32>,
+    en: Vec<u64>,
+}
+
+impl<'a> Expander<'a> {
+    fn new(p: &'a Problem, pk: &'a Packing, rules: &'a Rules) -> Expander<'a> {
+        Expander {
+            p,
+            pk,
+            rules,
+            locs: vec![0; p.automata.len()],
+            en: vec![0; rules.ew],
+        }
+    }
+
+    /// Append the requirement-allowed successors of the packed state `key` to `out` (keys,
+    /// events, hashes), then its end and its flags: [`MARKED`], and [`BAD`] when it is
+    /// forbidden or a requirement blocks an uncontrollable event the plant allows there. A
+    /// forbidden state is not expanded.
+    fn expand(&mut self, key: &[u64], out: &mut Batch) {
+        let (p, pk, r) = (self.p, self.pk, self.rules);
+        let n_ev = p.events.len();
+        let ew = r.ew;
+        let locs = &mut self.locs;
+        pk.unpack(key, locs);
+        let mut is_bad = p.is_forbidden(locs);
+        let mut f = if p.is_marked(locs) { MARKED } else { 0 };
+        if !is_bad {
+            // The events every plant allows here (one AND per plant and mask word), then
+            // only those are tried.
+            self.en.fill(u64::MAX);
+            for (a, m) in &r.masks {
+                let row = &m[locs[*a] as usize * ew..(locs[*a] as usize + 1) * ew];
+                for (x, y) in self.en.iter_mut().zip(row) {
+                    *x &= y;
+                }
+            }
+            for e in EventBits::new(&self.en, n_ev) {
+                let (mut plant_ok, mut req_ok) = (true, true);
+                let at = out.keys.len();
+                out.keys.extend_from_slice(key);
+                let next = &mut out.keys[at..];
+                for &(a, is_plant) in &r.parts[e] {
+                    let aut = &p.automata[a];
+                    let t = aut.next[locs[a] as usize * n_ev + e];
+                    if t == NONE {
+                        if is_plant {
+                            plant_ok = false;
+                            break;
+                        }
+                        req_ok = false;
+                    } else {
+                        pk.set(next, a, t);
+                    }
+                }
+                if plant_ok && req_ok {
+                    req_ok = r.needs_of[e].iter().all(|&k| p.needs[k].cond.eval(locs));
+                }
+                if !plant_ok || !req_ok {
+                    out.keys.truncate(at);
+                    if plant_ok && r.uncontrollable[e] {
+                        is_bad = true;
+                    }
+                    continue;
+                }
+                out.hashes.push(hash(&out.keys[at..]));
+                out.events.push(e as EventId);
+            }
+        }
+        if is_bad {
+            f |= BAD;
+        }
+        out.ends.push(out.events.len() as u32);
+        out.flags.push(f);
+    }
+}
+
 /// The set bits below `n` of a bit set, ascending.
 struct EventBits<'a> {
     words: &'a [u64],
@@ -302,12 +423,31 @@ const UNC: u32 = 1 << 31;
 /// the top bit).
 const MAX_STATES: usize = (1 << 31) - 2;
 
-/// One state's successors before they are looked up: packed keys, events and hashes.
+/// Successors of one or more states before they are looked up: packed keys, events and
+/// hashes, with each state's end in `events` and its flags ([`BAD`], [`MARKED`]).
 #[derive(Default)]
 struct Batch {
     keys: Vec<u64>,
     events: Vec<EventId>,
     hashes: Vec<u64>,
+    ends: Vec<u32>,
+    flags: Vec<u8>,
+}
+
+impl Batch {
+    fn clear(&mut self) {
+        self.keys.clear();
+        self.events.clear();
+        self.hashes.clear();
+        self.ends.clear();
+        self.flags.clear();
+    }
+
+    /// The successors of the `k`th state of the batch: a range of `events`.
+    fn state(&self, k: usize) -> std::ops::Range<usize> {
+        let start = if k == 0 { 0 } else { self.ends[k - 1] as usize };
+        start..self.ends[k] as usize
+    }
 }
 
 /// The reachable product as it is explored: the store of packed states, the visited table
@@ -322,11 +462,17 @@ struct Explored {
 }
 
 impl Explored {
-    /// Look up (and add) the successors of the next state in order; they become its
-    /// successor list.
-    fn add(&mut self, b: &Batch, budget: &Budget) -> Result<(), Error> {
+    /// Look up (and add) the successors of the next state in order, `b`'s successors in
+    /// `range`; they become its successor list.
+    fn add(
+        &mut self,
+        b: &Batch,
+        range: std::ops::Range<usize>,
+        budget: &Budget,
+    ) -> Result<(), Error> {
         let words = self.words;
-        for (j, (&e, &h)) in b.events.iter().zip(&b.hashes).enumerate() {
+        for j in range {
+            let (e, h) = (b.events[j], b.hashes[j]);
             if self.count >= MAX_STATES {
                 return Err(self.too_many(budget));
             }
@@ -371,20 +517,19 @@ impl Explored {
     }
 }
 
-/// Run the explicit engine within `budget`.
+/// Run the explicit engine within `budget`, in this thread.
 pub fn run(p: &Problem, budget: &Budget) -> Result<Explicit, Error> {
+    run_on(p, budget, 1)
+}
+
+/// Run the explicit engine within `budget`, exploring on `threads` threads (one: in this
+/// thread; two or more: the two-thread pipeline of [`pipeline`], which numbers the states
+/// exactly as one thread does, so the result is the same).
+pub fn run_on(p: &Problem, budget: &Budget, threads: usize) -> Result<Explicit, Error> {
     let pk = Packing::new(p);
     let words = pk.words;
-    let n_ev = p.events.len();
-    let parts = participants(p);
     let uncontrollable: Vec<bool> = p.events.iter().map(|e| !e.controllable).collect();
-    let needs_of: Vec<Vec<usize>> = (0..n_ev)
-        .map(|e| {
-            (0..p.needs.len())
-                .filter(|&i| p.needs[i].event as usize == e)
-                .collect()
-        })
-        .collect();
+    let rules = Rules::new(p);
     let mut x = Explored {
         words,
         store: vec![0; words],
@@ -397,88 +542,15 @@ pub fn run(p: &Problem, budget: &Budget) -> Result<Explicit, Error> {
     let h0 = hash(&x.store[..words]);
     x.visited.insert(&x.store, words, &x.store[..words], h0, 0);
     let mut flags: Vec<u8> = Vec::new();
-    let mut locs = vec![0u32; p.automata.len()];
-    let mut key = vec![0u64; words];
-    let (masks, ew) = plant_masks(p);
-    let mut en = vec![0u64; ew];
-    // Software pipelining: state i's successors are computed and their slots read while
-    // state i - 1's wait in `pending`; they are looked up one state later, when the slots are
-    // in the cache. A state not yet discovered first needs the pending look-ups.
-    let (mut cur, mut pending) = (Batch::default(), Batch::default());
-    let mut has_pending = false;
-    let mut i = 0usize;
-    loop {
-        if i >= x.count {
-            if has_pending {
-                x.add(&pending, budget)?;
-                has_pending = false;
-                continue;
-            }
-            break;
-        }
-        key.copy_from_slice(&x.store[i * words..(i + 1) * words]);
-        pk.unpack(&key, &mut locs);
-        let mut is_bad = p.is_forbidden(&locs);
-        let mut f = if p.is_marked(&locs) { MARKED } else { 0 };
-        cur.keys.clear();
-        cur.events.clear();
-        cur.hashes.clear();
-        if !is_bad {
-            // The events every plant allows here (one AND per plant and mask word), then
-            // only those are tried.
-            en.fill(u64::MAX);
-            for (a, m) in &masks {
-                let row = &m[locs[*a] as usize * ew..(locs[*a] as usize + 1) * ew];
-                for (x, y) in en.iter_mut().zip(row) {
-                    *x &= y;
-                }
-            }
-            for e in EventBits::new(&en, n_ev) {
-                let (mut plant_ok, mut req_ok) = (true, true);
-                let at = cur.keys.len();
-                cur.keys.extend_from_slice(&key);
-                let next = &mut cur.keys[at..];
-                for &(a, is_plant) in &parts[e] {
-                    let aut = &p.automata[a];
-                    let t = aut.next[locs[a] as usize * n_ev + e];
-                    if t == NONE {
-                        if is_plant {
-                            plant_ok = false;
-                            break;
-                        }
-                        req_ok = false;
-                    } else {
-                        pk.set(next, a, t);
-                    }
-                }
-                if plant_ok && req_ok {
-                    req_ok = needs_of[e].iter().all(|&k| p.needs[k].cond.eval(&locs));
-                }
-                if !plant_ok || !req_ok {
-                    cur.keys.truncate(at);
-                    if plant_ok && uncontrollable[e] {
-                        is_bad = true;
-                    }
-                    continue;
-                }
-                cur.hashes.push(hash(&cur.keys[at..]));
-                cur.events.push(e as EventId);
-            }
-        }
-        if is_bad {
-            f |= BAD;
-        }
-        flags.push(f);
-        x.visited.touch(&cur.hashes);
-        if has_pending {
-            x.add(&pending, budget)?;
-        }
-        std::mem::swap(&mut cur, &mut pending);
-        has_pending = true;
-        i += 1;
-        if i.is_multiple_of(4096) {
-            x.check(budget, "reachability")?;
-        }
+    if threads >= 2 {
+        pipeline::explore(p, &pk, &rules, &mut x, &mut flags, budget)?;
+    } else {
+        explore(
+            &mut Expander::new(p, &pk, &rules),
+            &mut x,
+            &mut flags,
+            budget,
+        )?;
     }
     x.check(budget, "reachability")?;
     let n = x.count;
@@ -505,6 +577,45 @@ pub fn run(p: &Problem, budget: &Budget) -> Result<Explicit, Error> {
         product_states: n,
         rounds,
     })
+}
+
+/// Explore the reachable product in this thread, software-pipelined: state i's successors
+/// are computed and their slots read while state i - 1's wait in `pending`; they are looked
+/// up one state later, when the slots are in the cache. A state not yet discovered first
+/// needs the pending look-ups.
+fn explore(
+    ex: &mut Expander<'_>,
+    x: &mut Explored,
+    flags: &mut Vec<u8>,
+    budget: &Budget,
+) -> Result<(), Error> {
+    let words = x.words;
+    let (mut cur, mut pending) = (Batch::default(), Batch::default());
+    let mut has_pending = false;
+    let mut i = 0usize;
+    loop {
+        if i >= x.count {
+            if has_pending {
+                x.add(&pending, pending.state(0), budget)?;
+                has_pending = false;
+                continue;
+            }
+            return Ok(());
+        }
+        cur.clear();
+        ex.expand(&x.store[i * words..(i + 1) * words], &mut cur);
+        flags.push(cur.flags[0]);
+        x.visited.touch(&cur.hashes);
+        if has_pending {
+            x.add(&pending, pending.state(0), budget)?;
+        }
+        std::mem::swap(&mut cur, &mut pending);
+        has_pending = true;
+        i += 1;
+        if i.is_multiple_of(4096) {
+            x.check(budget, "reachability")?;
+        }
+    }
 }
 
 /// The transition graph of the reachable product: successor lists as explored, predecessor

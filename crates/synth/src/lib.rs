@@ -82,6 +82,10 @@ pub struct Options {
     pub limits: Limits,
     /// Build the guards (needed to print or emit the supervisor; skipped otherwise).
     pub guards: bool,
+    /// Threads the explicit engine explores on: 1, or 2 and more for its two-thread pipeline
+    /// (the same result; docs/synthesis.md, "Engines"). In `auto`'s race the explicit engine
+    /// has one thread, the symbolic engine the other.
+    pub threads: usize,
 }
 
 /// A guard on one controllable event.
@@ -137,6 +141,7 @@ pub fn synthesize(p: &Problem, engine: Engine) -> Result<Synthesis, Error> {
             engine,
             limits: Limits::default(),
             guards: true,
+            threads: 1,
         },
     )
 }
@@ -164,6 +169,7 @@ fn race(p: &Problem, o: &Options) -> Result<Synthesis, Error> {
             let tx = tx.clone();
             let mut o = o.clone();
             o.engine = engine;
+            o.threads = 1;
             let mine = stop.clone();
             let outer = outer.clone();
             o.limits.stop = Some(mine.clone());
@@ -205,7 +211,7 @@ fn race(p: &Problem, o: &Options) -> Result<Synthesis, Error> {
 
 fn run_explicit(p: &Problem, o: &Options) -> Result<Synthesis, Error> {
     let budget = Budget::new(&o.limits);
-    let x = explicit::run(p, &budget)?;
+    let x = explicit::run_on(p, &budget, o.threads)?;
     let outcome = if x.size() == 0 {
         Outcome::Empty(explain::why_empty(p))
     } else {
