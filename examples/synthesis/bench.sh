@@ -43,15 +43,19 @@ ratio() {
     awk "BEGIN { if ($1 > 0) printf \"%.1f\", $2 / $1; else printf \"-\" }"
 }
 
-# quiet LABEL ENGINE FILE: `synth -q` (no guards, no file); prints one line and leaves the CPU
-# seconds in $QCPU; returns 1 when the run hit the limit.
+# quiet LABEL ENGINE FILE [THREADS]: `synth -q` (no guards, no file), with `--threads
+# THREADS` when given; prints one line (CPU and wall seconds) and leaves the CPU seconds in
+# $QCPU, the wall seconds in $QWALL; returns 1 when the run hit the limit.
 quiet() {
-    $TIME -f "%U %S %M" -o "$TMP/t" "$BIN" synth -q --engine "$2" --timeout "$LIMIT" "$3" >"$TMP/o" 2>&1
+    local th=() tag="$2 -q"
+    [ -n "${4:-}" ] && th=(--threads "$4") && tag="$2 -q t$4"
+    $TIME -f "%U %S %M %e" -o "$TMP/t" "$BIN" synth -q --engine "$2" --timeout "$LIMIT" "${th[@]}" "$3" >"$TMP/o" 2>&1
     local m
     m=$(tail -1 "$TMP/t" | cut -d' ' -f3)
+    QWALL=$(tail -1 "$TMP/t" | cut -d' ' -f4)
     QCPU=$(cpu_of "$TMP/t")
     QLINE=$(tail -1 "$TMP/o")
-    printf '%-28s %-9s cpu %7ss %6s MB  %s\n' "$1" "$2 -q" "$QCPU" $((m / 1024)) "$QLINE"
+    printf '%-28s %-12s cpu %7ss wall %6ss %6s MB  %s\n' "$1" "$tag" "$QCPU" "$QWALL" $((m / 1024)) "$QLINE"
     case $QLINE in unknown:*) return 1 ;; esac
     return 0
 }
@@ -66,11 +70,17 @@ simple() {
 }
 
 # compare LABEL FILE N: the explicit engine as the references run (no guards, no output
-# file), the simple Rust reference (while alive_simple is 1) and reference.py on
-# philosophers_N (while alive_reference is 1); ratios of CPU seconds in this run. Leaves the
-# references' CPU seconds in $SCPU and $RCPU ("" when not run or not finished in LIMIT s).
+# file, one thread: the references have one), the simple Rust reference (while alive_simple
+# is 1) and reference.py on philosophers_N (while alive_reference is 1); ratios of CPU
+# seconds in this run. Then the explicit engine on two threads (its pipeline) with the ratio
+# of wall times. Leaves the references' CPU seconds in $SCPU and $RCPU ("" when not run or
+# not finished in LIMIT s).
 compare() {
-    quiet "$1" explicit "$2"
+    quiet "$1" explicit "$2" 2
+    local wall2=$QWALL
+    quiet "$1" explicit "$2" 1
+    printf '%-28s %-12s two threads take %s of one thread'"'"'s wall time\n' "$1" ratio \
+        "$(awk "BEGIN { if ($QWALL > 0) printf \"%.2f\", $wall2 / $QWALL; else printf \"-\" }")"
     SCPU= RCPU=
     [ "${alive_simple:-1}" = 1 ] && simple "$1" "$2"
     if [ "${alive_reference:-1}" = 1 ]; then
@@ -81,7 +91,7 @@ compare() {
         [ $(( $(date +%s) - t0 )) -lt "$LIMIT" ] &&
             RCPU=$(echo "$ref" | sed -n 's/^reference \([0-9.]*\)s.*/\1/p')
     fi
-    printf '%-28s %-9s explicit -q is %sx the simple Rust reference, %sx reference.py\n' \
+    printf '%-28s %-12s explicit -q t1 is %sx the simple Rust reference, %sx reference.py\n' \
         "$1" ratio "$(ratio "$QCPU" "$SCPU")" "$(ratio "$QCPU" "$RCPU")"
 }
 
