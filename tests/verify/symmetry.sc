@@ -57,3 +57,28 @@ system Workers {
   connect env.go -> w[*].go;
   invariant env_ok: env.n < 3;
 }
+
+// A family that holds: `x` and `y` step together modulo 4, so `x == y` is inductive (proved
+// by IC3 and by k-induction at k = 1; BMC says `bounded`). `full` (x == 3) needs three `inc`s
+// after tick 0: reachable at depth 4, for every element.
+chart Pair {
+  input event inc;
+  output x: int[0..3] = 0;
+  output y: int[0..3] = 0;
+  initial S;
+  state S { on inc / { x = (x + 1) % 4; y = (y + 1) % 4; }; }
+  invariant same: x == y;
+  reachable full: x == 3;
+}
+
+system Pairs {
+  instance p[4]: Pair;
+}
+
+// The counters interleaved: one element steps per tick, chosen by the scheduler input
+// `sched.unit`, which names elements by index. The detection accepts the array, but
+// exchanging two elements does not commute with the step (the scheduler's choice stays), so
+// the engines' test of the step turns the reduction off (`symmetry_note`).
+system Interleaved interleaved {
+  instance a[3]: Counter;
+}

@@ -88,11 +88,12 @@ pub struct VerifyArgs {
     /// Explore even when there are more than a million input vectors per tick.
     #[arg(long)]
     force: bool,
-    /// Symmetry reduction in the explicit engine: the elements of instance arrays that
-    /// nothing tells apart are interchangeable, and one state is stored per orbit
-    /// (docs/verification.md, "Symmetry reduction"); what breaks an array's symmetry is
-    /// reported (W0316–W0318). Off by default: state counts are then those of every other
-    /// engine and of SPIN.
+    /// Symmetry reduction: the elements of instance arrays that nothing tells apart are
+    /// interchangeable; the explicit engine stores one state per orbit, and the SAT engines
+    /// check one member of each family of element properties (`a[0].p`) and give the others
+    /// its verdict (docs/verification.md, "Symmetry reduction"); what breaks an array's
+    /// symmetry is reported (W0316–W0318). Off by default: state counts are then those of
+    /// every other engine and of SPIN.
     #[arg(long, overrides_with = "no_symmetry")]
     symmetry: bool,
     /// No symmetry reduction (the default).

@@ -12,11 +12,10 @@
 //! answered for all members together: the run that decides one member, with two elements
 //! exchanged, decides another.
 //!
-//! Before a search, [`Canon::validate`] tests the detection on the program itself: on states
-//! of random runs, stepping a permuted state with permuted inputs must give the permuted
-//! successor (the same run-time error, or none) — for the exchange of the first two elements
-//! and for the rotation, which together make every permutation. Should the detection ever
-//! accept an array that the step does not treat alike, the reduction is switched off.
+//! Before a search, the engine tests the detection on the program itself
+//! ([`Symmetry::validate`], shared with the SAT engines' reduction); should the detection ever
+//! accept an array that the step does not treat alike, the reduction is switched off. The
+//! permutations of states and input vectors are the IR's ([`statecheck_ir::symmetry::Group`]).
 
 use crate::expand::decides;
 use crate::pack::{Key, Packer};
@@ -34,14 +33,14 @@ struct Block {
     width: usize,
     /// `slots[i * width + j]`: slot `j` of element `i`.
     slots: Vec<u32>,
-    /// Per element: positions in the input vector of its free inputs.
-    inputs: Vec<Vec<usize>>,
 }
 
 /// The canonical form of states under a [`Symmetry`].
 #[derive(Clone, Debug)]
 pub(crate) struct Canon {
     blocks: Vec<Block>,
+    /// The arrays as detected: their permutations of states and inputs.
+    sym: Symmetry,
     /// Per family: the array (index into the blocks) and its members' indices in the specs
     /// (element order).
     pub families: Vec<(usize, Vec<usize>)>,
@@ -64,7 +63,6 @@ impl Canon {
                 n: g.blocks.len(),
                 width: g.blocks[0].len(),
                 slots: g.blocks.iter().flatten().copied().collect(),
-                inputs: g.inputs.clone(),
             })
             .collect();
         if blocks.iter().all(|b| b.n < 2) {
@@ -81,7 +79,11 @@ impl Canon {
                 Some((g, m))
             })
             .collect();
-        Some(Canon { blocks, families })
+        Some(Canon {
+            blocks,
+            sym: sym.clone(),
+            families,
+        })
     }
 
     /// Sort the element blocks of `state` in place; `perm` (when given) receives, per array,
@@ -141,33 +143,6 @@ impl Canon {
         perm
     }
 
-    /// `inputs` with element `q`'s inputs given to element `sigma[q]` (per array).
-    fn permute_inputs(&self, inputs: &[i64], sigma: &[Vec<usize>]) -> Vec<i64> {
-        let mut out = inputs.to_vec();
-        for (b, s) in self.blocks.iter().zip(sigma) {
-            for (q, &to) in s.iter().enumerate() {
-                for (j, &at) in b.inputs[q].iter().enumerate() {
-                    out[b.inputs[to][j]] = inputs[at];
-                }
-            }
-        }
-        out
-    }
-
-    /// `state` with element `q`'s block moved to element `sigma[q]` (per array).
-    fn permute_state(&self, state: &[i64], sigma: &[Vec<usize>]) -> Vec<i64> {
-        let mut out = state.to_vec();
-        for (b, s) in self.blocks.iter().zip(sigma) {
-            let w = b.width;
-            for (q, &to) in s.iter().enumerate() {
-                for j in 0..w {
-                    out[b.slots[to * w + j] as usize] = state[b.slots[q * w + j] as usize];
-                }
-            }
-        }
-        out
-    }
-
     /// The concrete run of a path of canonical states given by its canonical input vectors
     /// from the initial state (see the module documentation).
     pub fn concretize(&self, p: &Program, path: &[Vec<i64>]) -> Vec<Vec<i64>> {
@@ -176,7 +151,7 @@ impl Canon {
         let mut sigma = self.canonical(&mut state);
         let mut out = Vec::with_capacity(path.len());
         for v in path {
-            out.push(self.permute_inputs(v, &sigma));
+            out.push(self.sym.permute_inputs(v, &sigma));
             m.load(&state, v);
             if m.step().is_err() {
                 break;
@@ -216,31 +191,15 @@ impl Canon {
         k: usize,
         specs: &[Spec],
     ) -> Option<Vec<Vec<i64>>> {
-        let n = fam.len();
-        (0..n).find_map(|e| {
-            let sigma: Vec<Vec<usize>> = self
-                .blocks
-                .iter()
-                .enumerate()
-                .map(|(h, b)| {
-                    (0..b.n)
-                        .map(|i| match () {
-                            _ if h != g => i,
-                            _ if i == e => k,
-                            _ if i == k => e,
-                            _ => i,
-                        })
-                        .collect()
-                })
-                .collect();
-            let r: Vec<Vec<i64>> = run.iter().map(|v| self.permute_inputs(v, &sigma)).collect();
+        let group = &self.sym.groups[g];
+        (0..fam.len()).find_map(|e| {
+            let r: Vec<Vec<i64>> = run.iter().map(|v| group.exchange_inputs(v, e, k)).collect();
             Self::decides_at_end(p, &r, &specs[fam[k]]).then_some(r)
         })
     }
 
-    /// Test the symmetry on the step itself (see the module documentation): `Err` describes
-    /// the first state where permuting the elements changed the outcome. Runs `runs` random
-    /// runs of `len` ticks over the input vectors `vector(i)`, `i < count`.
+    /// Test the symmetry on the step itself ([`Symmetry::validate`]) along `runs` random runs
+    /// of `len` ticks over the input vectors `vector(i)`, `i < count`.
     pub fn validate(
         &self,
         p: &Program,
@@ -249,60 +208,10 @@ impl Canon {
         runs: usize,
         len: usize,
     ) -> Result<(), String> {
-        let gens: Vec<Vec<Vec<usize>>> = (0..2)
-            .map(|kind| {
-                self.blocks
-                    .iter()
-                    .map(|b| {
-                        (0..b.n)
-                            .map(|i| match kind {
-                                0 if i < 2 => 1 - i,
-                                0 => i,
-                                _ => (i + 1) % b.n,
-                            })
-                            .collect()
-                    })
-                    .collect()
-            })
-            .collect();
-        let mut seed = 0x9e37_79b9_7f4a_7c15u64;
-        let mut next = move || {
-            seed ^= seed << 13;
-            seed ^= seed >> 7;
-            seed ^= seed << 17;
-            seed
-        };
         if count == 0 {
             return Ok(());
         }
-        let mut m = Machine::new(p);
-        for _ in 0..runs {
-            let mut state = Machine::new(p).state().to_vec();
-            for _ in 0..len {
-                let v = vector(u128::from(next()) % count);
-                m.load(&state, &v);
-                let r = m.step().map(|_| m.state().to_vec());
-                for g in &gens {
-                    let (ps, pv) = (self.permute_state(&state, g), self.permute_inputs(&v, g));
-                    m.load(&ps, &pv);
-                    let rp = m.step().map(|_| m.state().to_vec());
-                    let same = match (&r, &rp) {
-                        (Ok(a), Ok(b)) => self.permute_state(a, g) == *b,
-                        (Err(a), Err(b)) => a.kind.builtin() == b.kind.builtin(),
-                        _ => false,
-                    };
-                    if !same {
-                        return Err(format!(
-                            "the step does not treat the elements alike (state {state:?}, inputs {v:?})"
-                        ));
-                    }
-                }
-                match r {
-                    Ok(s) => state = s,
-                    Err(_) => break,
-                }
-            }
-        }
-        Ok(())
+        self.sym
+            .validate(p, runs, len, |r| vector(u128::from(r) % count))
     }
 }

@@ -15,10 +15,18 @@
 //! - the elements' slots correspond one to one (same roles, ranges and initial values).
 //!
 //! Temporal properties are not reduced (the explicit engine's temporal search runs on the
-//! full state space), so they do not restrict the symmetry. Everything else breaks symmetry
+//! full state space, the SAT engines check every temporal row as it is), so they do not
+//! restrict the symmetry. Everything else breaks symmetry
 //! with a diagnostic naming what breaks it: W0316 for a connection, W0317 for a property, an
 //! assume or an observer, W0318 when the elements' slots do not correspond.
+//!
+//! The permutations themselves are here too, for every engine that uses the symmetry: a
+//! permutation of one array's elements acting on a state ([`Group::permute_state`]) and on an
+//! input vector ([`Group::permute_inputs`]; [`Group::exchange_inputs`] maps a run deciding one
+//! member of a family to a run deciding another), and [`Symmetry::validate`], the test of
+//! the detection on the step itself that an engine runs before it relies on it.
 
+use crate::interp::Machine;
 use crate::program::{Node, Program, SlotId, SlotRole};
 use statecheck_base::{Diagnostic, Span};
 use statecheck_model::System;
@@ -44,6 +52,143 @@ pub struct Group {
     /// Chart properties of the elements: per family, the index in [`Program::properties`] of
     /// each element's member, in element order.
     pub families: Vec<Vec<usize>>,
+}
+
+impl Group {
+    /// Write into `out` element `q`'s free inputs of the input vector `inputs` (in
+    /// [`Program::inputs`] order) at element `sigma[q]`'s positions, for every element; the
+    /// other positions of `out` are left as they are (`out` starts as a copy of `inputs`).
+    pub fn permute_inputs(&self, inputs: &[i64], sigma: &[usize], out: &mut [i64]) {
+        for (q, &to) in sigma.iter().enumerate() {
+            for (&at, &dst) in self.inputs[q].iter().zip(&self.inputs[to]) {
+                out[dst] = inputs[at];
+            }
+        }
+    }
+
+    /// Write into `out` element `q`'s state block of `state` at element `sigma[q]`'s slots,
+    /// for every element; the other slots of `out` are left as they are.
+    pub fn permute_state(&self, state: &[i64], sigma: &[usize], out: &mut [i64]) {
+        for (q, &to) in sigma.iter().enumerate() {
+            for (&at, &dst) in self.blocks[q].iter().zip(&self.blocks[to]) {
+                out[dst as usize] = state[at as usize];
+            }
+        }
+    }
+
+    /// The exchange of elements `a` and `b`, as a permutation of the elements.
+    pub fn exchange(&self, a: usize, b: usize) -> Vec<usize> {
+        (0..self.blocks.len())
+            .map(|i| match i {
+                _ if i == a => b,
+                _ if i == b => a,
+                _ => i,
+            })
+            .collect()
+    }
+
+    /// The input vector `inputs` with elements `a` and `b`'s free inputs exchanged. Applied
+    /// to every tick of a run that decides family member `a` at some tick, it gives a run
+    /// that decides member `b` at the same tick (docs/verification.md, "Symmetry
+    /// reduction"): the step commutes with the exchange and the initial state is fixed by it.
+    pub fn exchange_inputs(&self, inputs: &[i64], a: usize, b: usize) -> Vec<i64> {
+        let mut out = inputs.to_vec();
+        self.permute_inputs(inputs, &self.exchange(a, b), &mut out);
+        out
+    }
+}
+
+impl Symmetry {
+    /// `inputs` with, per array `g`, element `q`'s free inputs given to element `sigma[g][q]`.
+    pub fn permute_inputs(&self, inputs: &[i64], sigma: &[Vec<usize>]) -> Vec<i64> {
+        let mut out = inputs.to_vec();
+        for (g, s) in self.groups.iter().zip(sigma) {
+            g.permute_inputs(inputs, s, &mut out);
+        }
+        out
+    }
+
+    /// `state` with, per array `g`, element `q`'s block moved to element `sigma[g][q]`.
+    pub fn permute_state(&self, state: &[i64], sigma: &[Vec<usize>]) -> Vec<i64> {
+        let mut out = state.to_vec();
+        for (g, s) in self.groups.iter().zip(sigma) {
+            g.permute_state(state, s, &mut out);
+        }
+        out
+    }
+
+    /// Test the detection on the step of `p` itself: along `runs` random runs of `len` ticks
+    /// from the initial state (tick inputs `vector(r)` for random numbers `r`), stepping each
+    /// state permuted with its inputs permuted must give the permuted successor (the same
+    /// run-time error, or none) — for the exchange of the first two elements of every array
+    /// and for the rotation, which together make every permutation. `Err` describes the
+    /// first state where the outcome differed. Also `Err` when the initial state is not
+    /// fixed by these permutations.
+    pub fn validate(
+        &self,
+        p: &Program,
+        runs: usize,
+        len: usize,
+        mut vector: impl FnMut(u64) -> Vec<i64>,
+    ) -> Result<(), String> {
+        let gens: Vec<Vec<Vec<usize>>> = (0..2)
+            .map(|kind| {
+                self.groups
+                    .iter()
+                    .map(|g| {
+                        let n = g.blocks.len();
+                        (0..n)
+                            .map(|i| match kind {
+                                0 if i < 2 => 1 - i,
+                                0 => i,
+                                _ => (i + 1) % n,
+                            })
+                            .collect()
+                    })
+                    .collect()
+            })
+            .collect();
+        let mut seed = 0x9e37_79b9_7f4a_7c15u64;
+        let mut next = move || {
+            seed ^= seed << 13;
+            seed ^= seed >> 7;
+            seed ^= seed << 17;
+            seed
+        };
+        let mut m = Machine::new(p);
+        let init = m.state().to_vec();
+        if gens.iter().any(|g| self.permute_state(&init, g) != init) {
+            return Err("the elements' initial states differ".to_string());
+        }
+        for _ in 0..runs {
+            let mut state = init.clone();
+            for _ in 0..len {
+                let v = vector(next());
+                m.load(&state, &v);
+                let r = m.step().map(|_| m.state().to_vec());
+                for g in &gens {
+                    let (ps, pv) = (self.permute_state(&state, g), self.permute_inputs(&v, g));
+                    m.load(&ps, &pv);
+                    let rp = m.step().map(|_| m.state().to_vec());
+                    let same = match (&r, &rp) {
+                        (Ok(a), Ok(b)) => self.permute_state(a, g) == *b,
+                        (Err(a), Err(b)) => a.kind.builtin() == b.kind.builtin(),
+                        _ => false,
+                    };
+                    if !same {
+                        return Err(format!(
+                            "the step does not treat the elements alike (state {state:?}, inputs {v:?})"
+                        ));
+                    }
+                }
+                match r {
+                    Ok(s) => state = s,
+                    Err(_) => break,
+                }
+            }
+        }
+        Ok(())
+    }
 }
 
 /// What [`detect`] found: the symmetric arrays, and why the others are not.
@@ -319,4 +464,41 @@ fn array(sys: &System, p: &Program, name: &str, elems: &[u32]) -> (Option<Group>
         families: fams,
     };
     (Some(group), diags)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Three elements of one slot and one input each; the input vector has one more input
+    /// (position 3, outside the array) and the state one more slot (3), which no permutation
+    /// moves.
+    fn group() -> Group {
+        Group {
+            array: "a".into(),
+            blocks: vec![vec![0], vec![1], vec![2]],
+            inputs: vec![vec![0], vec![1], vec![2]],
+            families: Vec::new(),
+        }
+    }
+
+    #[test]
+    fn exchanging_two_elements_swaps_their_inputs_only() {
+        let g = group();
+        assert_eq!(g.exchange(0, 2), [2, 1, 0]);
+        assert_eq!(g.exchange_inputs(&[10, 20, 30, 40], 0, 2), [30, 20, 10, 40]);
+        assert_eq!(g.exchange_inputs(&[10, 20, 30, 40], 1, 1), [10, 20, 30, 40]);
+    }
+
+    /// The rotation `sigma = [1, 2, 0]` sends element 0's block to element 1, 1's to 2 and
+    /// 2's to 0: `[a, b, c]` becomes `[c, a, b]`.
+    #[test]
+    fn a_permutation_moves_element_q_to_sigma_q() {
+        let sym = Symmetry {
+            groups: vec![group()],
+        };
+        let sigma = [vec![1, 2, 0]];
+        assert_eq!(sym.permute_state(&[1, 2, 3, 9], &sigma), [3, 1, 2, 9]);
+        assert_eq!(sym.permute_inputs(&[1, 2, 3, 9], &sigma), [3, 1, 2, 9]);
+    }
 }

@@ -14,6 +14,7 @@ mod priority;
 mod quick;
 mod schedule;
 mod single;
+mod symmetry;
 mod temporal;
 
 pub use cancel::{Cancel, CancelReason};
@@ -142,6 +143,10 @@ pub struct Meta {
     /// With [`Engine::Auto`]: seconds from the start of the run to the verdict (the engines
     /// run side by side, so this, not `time_s`, is when the user had the answer).
     pub decided_at_s: Option<f64>,
+    /// With symmetry reduction (`ExplicitOptions::symmetry`): the family member whose SAT
+    /// check answered this row too (`a[0].p` for `a[2].p`); the counterexample is that
+    /// member's with the two elements exchanged (docs/verification.md, "Symmetry reduction").
+    pub symmetry_of: Option<String>,
 }
 
 /// Something that happened during a run, reported as it happens.

@@ -10,6 +10,10 @@
 //! depth (its shortest traces for all of them for the price of the deepest), then takes what
 //! is left (the built-ins) through the same passes.
 //!
+//! With symmetry reduction the SAT engines check one member of each family (their flags of
+//! the other members are raised up front) and a member's verdict is its followers' too
+//! (`symmetry.rs`); the explicit engine decides every row itself, with its own reduction.
+//!
 //! Before any of that, [`crate::verify`] runs the quick race of `quick.rs`: a small model is
 //! decided there in moments, without starting the whole portfolio.
 
@@ -17,6 +21,7 @@ use crate::circuit::SYMBOLIC_RACE;
 use crate::priority::lower_priority;
 use crate::schedule::{self, Work};
 use crate::single::{early_end_reason, meta_of};
+use crate::symmetry::Families;
 use crate::{Error, Event, Meta, Options, Run, REASON_PROPERTY_LIMIT};
 use statecheck_explicit::{Progress, Report, Stats};
 use statecheck_ir::verdict::{PropKind, PropResult};
@@ -99,6 +104,17 @@ pub(crate) fn run_auto(
     // One flag per property: raised when any engine decides it (the others move on to the
     // next property) and, for all, when the run ends.
     let flags: Vec<Arc<AtomicBool>> = (0..n).map(|_| Arc::new(AtomicBool::new(false))).collect();
+    // Rows answered by symmetry: raised for the SAT engines, which then skip them.
+    let rows: Vec<&str> = idx
+        .iter()
+        .map(|&(pi, _)| bl.props[pi].name.as_str())
+        .collect();
+    let families = Families::new(p, opts.check.symmetry.as_ref(), &rows);
+    for (i, f) in flags.iter().enumerate() {
+        if families.is_derived(i) {
+            f.store(true, Ordering::Relaxed);
+        }
+    }
     let reductions = Reductions::new(bl.props.len());
     let depth = opts.check.depth.map(|d| d as usize);
     let mut got: Vec<Option<Decided>> = vec![None; n];
@@ -189,6 +205,7 @@ pub(crate) fn run_auto(
                                 time_s: Some(t.as_secs_f64()),
                                 reason: None,
                                 decided_at_s: Some(origin.elapsed().as_secs_f64()),
+                                symmetry_of: None,
                             };
                             if r.verdict.is_definitive() && got[i].is_none() {
                                 decide(i, r.clone(), m, None, &mut got);
@@ -202,10 +219,27 @@ pub(crate) fn run_auto(
                 Msg::Symbolic(i, engine, s) => {
                     let mut m = meta_of(engine, &s);
                     m.decided_at_s = Some(origin.elapsed().as_secs_f64());
-                    if s.result.verdict.is_definitive() && got[i].is_none() {
+                    let definitive = s.result.verdict.is_definitive() && got[i].is_none();
+                    let replaces = |f: &Option<(PropResult, Meta)>| engine == "ic3" || f.is_none();
+                    let derived: Vec<(usize, PropResult, Meta)> = families
+                        .followers(i)
+                        .iter()
+                        .filter_map(|&k| {
+                            let (r, m) = families.derive(k, &s.result, &m)?;
+                            Some((k, r, m))
+                        })
+                        .collect();
+                    if definitive {
                         decide(i, s.result, m, s.invariant, &mut got);
-                    } else if engine == "ic3" || fallback[i].is_none() {
+                    } else if replaces(&fallback[i]) {
                         fallback[i] = Some((s.result, m));
+                    }
+                    for (k, r, mk) in derived {
+                        if definitive && got[k].is_none() {
+                            decide(k, r, mk, None, &mut got);
+                        } else if !definitive && replaces(&fallback[k]) {
+                            fallback[k] = Some((r, mk));
+                        }
                     }
                 }
                 Msg::Done => done += 1,
@@ -225,6 +259,7 @@ pub(crate) fn run_auto(
                         time_s: Some(started.elapsed().as_secs_f64()),
                         reason: None,
                         decided_at_s: None,
+                        symmetry_of: None,
                     },
                 )
             });
@@ -259,6 +294,7 @@ pub(crate) fn run_auto(
             stats: explicit_stats.unwrap_or(Stats {
                 threads: cores,
                 state_bits: p.state_bits(),
+                symmetry_note: families.note.clone(),
                 ..Stats::default()
             }),
         },

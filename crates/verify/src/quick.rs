@@ -155,6 +155,7 @@ fn quick_explicit(
             time_s: Some(time_s),
             reason: None,
             decided_at_s: Some(time_s),
+            symmetry_of: None,
         };
         n
     ];

@@ -1,7 +1,9 @@
 //! One engine alone: the explicit engine, or one SAT engine deciding the properties on the
-//! fair schedule (`schedule.rs`).
+//! fair schedule (`schedule.rs`); with symmetry reduction, the SAT engine checks one member
+//! of each family and the others follow it (`symmetry.rs`).
 
 use crate::schedule::{self, Work};
+use crate::symmetry::Families;
 use crate::{Error, Event, Meta, Options, Run, DEFAULT_BMC_DEPTH, REASON_TIME_LIMIT};
 use statecheck_explicit::{Limit, Report, Stats};
 use statecheck_ir::verdict::{PropResult, Verdict};
@@ -17,6 +19,7 @@ pub(crate) fn meta_of(engine: &'static str, s: &SymResult) -> Meta {
         engine,
         time_s: Some(s.time.as_secs_f64()),
         decided_at_s: None,
+        symmetry_of: None,
         reason: s.reason.clone(),
     }
 }
@@ -94,6 +97,17 @@ pub(crate) fn run_engine(
         .map_or_else(|| Arc::new(AtomicBool::new(false)), |c| c.flag());
     // One flag per property, raised with the run's stop flag by a watcher thread.
     let flags: Vec<Arc<AtomicBool>> = (0..n).map(|_| Arc::new(AtomicBool::new(false))).collect();
+    // The rows answered by symmetry are never scheduled: their flags are raised up front.
+    let rows: Vec<&str> = idx
+        .iter()
+        .map(|&(pi, _)| bl.props[pi].name.as_str())
+        .collect();
+    let families = Families::new(p, opts.check.symmetry.as_ref(), &rows);
+    for (i, f) in flags.iter().enumerate() {
+        if families.is_derived(i) {
+            f.store(true, Ordering::Relaxed);
+        }
+    }
     let reductions = Reductions::new(bl.props.len());
     let mut got: Vec<Option<(PropResult, Meta, _)>> = vec![None; n];
     // Dropped when the engine is done, which wakes the watcher at once.
@@ -139,6 +153,16 @@ pub(crate) fn run_engine(
                 result: &r.result,
                 meta: &m,
             });
+            for &k in families.followers(i) {
+                if let Some((rk, mk)) = families.derive(k, &r.result, &m) {
+                    events(Event::Decided {
+                        index: k,
+                        result: &rk,
+                        meta: &mk,
+                    });
+                    got[k] = Some((rk, mk, None));
+                }
+            }
             got[i] = Some((r.result, m, r.invariant));
         });
         drop(finished);
@@ -155,6 +179,7 @@ pub(crate) fn run_engine(
                 time_s: Some(0.0),
                 reason: Some(early_end_reason(opts, deadline)),
                 decided_at_s: None,
+                symmetry_of: None,
             };
             events(Event::Decided {
                 index: i,
@@ -173,6 +198,7 @@ pub(crate) fn run_engine(
             stats: Stats {
                 threads: 1,
                 state_bits: p.state_bits(),
+                symmetry_note: families.note,
                 ..Stats::default()
             },
         },

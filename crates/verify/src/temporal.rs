@@ -208,6 +208,7 @@ fn race(
                 time_s: Some(started.elapsed().as_secs_f64()),
                 reason: None,
                 decided_at_s: Some(started.elapsed().as_secs_f64()),
+                symmetry_of: None,
             };
             let mut r = PropResult::unknown(&rows[i].name, rows[i].kind);
             r.verdict = statecheck_ir::verdict::Verdict::Proved;
@@ -232,6 +233,7 @@ fn race(
                         .to_string()
                 }),
                 decided_at_s: None,
+                symmetry_of: None,
             };
             decide(i, PropResult::unknown(&row.name, row.kind), m);
         }
@@ -338,6 +340,7 @@ fn race(
                             time_s: Some(t.as_secs_f64()),
                             reason: None,
                             decided_at_s: at,
+                            symmetry_of: None,
                         };
                         if r.verdict.is_definitive() && is_open(i) {
                             decide(i, r, m);
@@ -352,6 +355,7 @@ fn race(
                         time_s: Some(t.as_secs_f64()),
                         reason: None,
                         decided_at_s: at,
+                        symmetry_of: None,
                     };
                     if is_open(i) {
                         decide(i, r, m);
@@ -388,6 +392,7 @@ fn race(
                     time_s: Some(started.elapsed().as_secs_f64()),
                     reason: None,
                     decided_at_s: None,
+                    symmetry_of: None,
                 },
             )
         });

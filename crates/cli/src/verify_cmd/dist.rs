@@ -90,6 +90,7 @@ pub fn run(a: &VerifyArgs, loaded: &Loaded, program: &Program, check: Options) -
                 .clone()
                 .filter(|_| r.verdict == statecheck_explicit::Verdict::Unknown),
             decided_at_s: None,
+            symmetry_of: None,
         })
         .collect();
     if a.json || a.json_lines {

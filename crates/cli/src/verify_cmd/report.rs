@@ -86,6 +86,9 @@ pub fn result_json(
     if let Some(at) = m.and_then(|m| m.decided_at_s) {
         o["decided_at_s"] = json!(at);
     }
+    if let Some(of) = m.and_then(|m| m.symmetry_of.as_deref()) {
+        o["symmetry_of"] = json!(of);
+    }
     if let Some(c) = c {
         o["tick"] = json!(c.tick);
         if let Some(t) = p.seconds(c.tick) {
@@ -230,7 +233,7 @@ impl Columns {
         let w = self.width;
         if self.engines {
             format!(
-                "{:<w$}  {:<11}  {:<11}  {:<8}  {:>5}  {:.3} s{}\n",
+                "{:<w$}  {:<11}  {:<11}  {:<8}  {:>5}  {:.3} s{}{}\n",
                 r.name,
                 r.kind.as_str(),
                 r.verdict.as_str(),
@@ -240,6 +243,10 @@ impl Columns {
                 m.reason
                     .as_ref()
                     .map(|x| format!("  ({x})"))
+                    .unwrap_or_default(),
+                m.symmetry_of
+                    .as_ref()
+                    .map(|x| format!("  (by symmetry from `{x}`)"))
                     .unwrap_or_default()
             )
         } else {
