@@ -369,3 +369,36 @@ fn sat_engines_test_the_symmetry_on_the_step_before_using_it() {
         );
     }
 }
+
+/// The explicit engine with `--symmetry` and one member of a family selected
+/// (`--property a[2].below`): a member alone is not invariant under the permutations (a
+/// canonical state may put the violating element elsewhere), so the reduction is off, with a
+/// note, and the search is the full one — 28 states, as without symmetry (the model's
+/// comment) — and its counterexample replays to `a[2].below` itself (element 2's counter at 2
+/// at tick 2). Before, the reduction stayed on and the counterexample decided `a[0].below`.
+#[test]
+fn explicit_symmetry_is_off_when_only_some_members_of_a_family_are_checked() {
+    let dir = std::env::temp_dir().join(format!(
+        "statecheck-symmetry-partial-{}",
+        std::process::id()
+    ));
+    let d = dir.to_string_lossy().into_owned();
+    let (v, _) = verify(
+        "Counters",
+        &["--symmetry", "--property", "a[2].below", "--cex-dir", &d],
+    );
+    assert_eq!(v["stats"]["symmetry"], false, "{v}");
+    assert_eq!(v["stats"]["states"], 28, "{v}");
+    let note = v["stats"]["symmetry_note"].as_str().unwrap_or("");
+    assert!(note.contains("a[2].below"), "{note}");
+    let rows = results(&v);
+    assert_eq!(rows.len(), 1);
+    assert_eq!(rows[0]["verdict"], "violated");
+    assert_eq!(rows[0]["depth"], 3);
+    let (code, tick, value, prop) = replay("Counters", &dir.join("a_2__below.scn"), "a[2].c");
+    assert_eq!(
+        (code, tick, value, prop.as_str()),
+        (Some(4), 2, 2, "a[2].below")
+    );
+    let _ = std::fs::remove_dir_all(&dir);
+}

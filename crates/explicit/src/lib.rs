@@ -382,10 +382,18 @@ fn verify_safety(
                 reason: e.to_string(),
             },
         })?;
-    let canon = opts
+    let canon = match opts
         .symmetry
         .as_deref()
-        .and_then(|s| symmetry::Canon::new(program, s, &specs));
+        .map(|s| symmetry::Canon::new(program, s, &specs))
+    {
+        Some(Ok(c)) => c,
+        Some(Err(why)) => {
+            stats.symmetry_note = Some(why);
+            None
+        }
+        None => None,
+    };
     let canon = match canon {
         Some(c) => match c.validate(program, space.per_tick(), |i| space.vector(i), 8, 64) {
             Ok(()) => Some(c),

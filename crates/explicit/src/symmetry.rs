@@ -53,9 +53,11 @@ thread_local! {
 }
 
 impl Canon {
-    /// The canonical form for `sym` on `p`; `None` when no array is symmetric. Families are
-    /// given as spec indices (members not selected are left out).
-    pub fn new(p: &Program, sym: &Symmetry, specs: &[Spec]) -> Option<Canon> {
+    /// The canonical form for `sym` on `p`; `Ok(None)` when no array is symmetric. Families
+    /// are given as spec indices. `Err` (why the reduction is off) when only some members of
+    /// a family are checked (`--property a[2].below`): one member alone is not invariant under
+    /// the permutations, so a canonical state could hide its violation.
+    pub fn new(p: &Program, sym: &Symmetry, specs: &[Spec]) -> Result<Option<Canon>, String> {
         let blocks: Vec<Block> = sym
             .groups
             .iter()
@@ -66,24 +68,28 @@ impl Canon {
             })
             .collect();
         if blocks.iter().all(|b| b.n < 2) {
-            return None;
+            return Ok(None);
         }
         let spec_of = |q: usize| specs.iter().position(|s| s.name == p.properties[q].name);
-        let families = sym
-            .groups
-            .iter()
-            .enumerate()
-            .flat_map(|(g, gr)| gr.families.iter().map(move |f| (g, f)))
-            .filter_map(|(g, f)| {
-                let m = f.iter().map(|&q| spec_of(q)).collect::<Option<Vec<_>>>()?;
-                Some((g, m))
-            })
-            .collect();
-        Some(Canon {
+        let mut families = Vec::new();
+        for (g, gr) in sym.groups.iter().enumerate() {
+            for f in &gr.families {
+                let members: Vec<Option<usize>> = f.iter().map(|&q| spec_of(q)).collect();
+                if members.iter().all(Option::is_some) {
+                    families.push((g, members.into_iter().flatten().collect()));
+                } else if let Some(q) = f.iter().find(|&&q| spec_of(q).is_some()) {
+                    return Err(format!(
+                        "symmetry reduction off: `{}` is checked without the other members of its family (check all of them, or none)",
+                        p.properties[*q].name
+                    ));
+                }
+            }
+        }
+        Ok(Some(Canon {
             blocks,
             sym: sym.clone(),
             families,
-        })
+        }))
     }
 
     /// Sort the element blocks of `state` in place; `perm` (when given) receives, per array,
