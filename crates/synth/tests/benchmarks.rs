@@ -3,24 +3,10 @@
 //! lowered through the normal pipeline and checked in the closed loop by `check` (which shares
 //! no code with the fixpoints).
 
-use statecheck_synth::{check, emit, extract, families, synthesize, Engine, Outcome, Problem};
+mod common;
+use common::{example, problem_of};
 
-fn problem_of(text: &str, system: Option<&str>) -> Problem {
-    let (file, diags) = statecheck_syntax::parse(text);
-    assert!(diags.is_empty(), "{diags:?}");
-    let (model, diags) = statecheck_model::check(&file);
-    assert!(!diags.iter().any(|d| d.is_error()), "{diags:?}");
-    let sys = extract::find_system(&model, system).expect("system");
-    extract::extract(&model, sys).expect("extract")
-}
-
-fn example(name: &str) -> String {
-    let path = format!(
-        "{}/../../examples/synthesis/{name}",
-        env!("CARGO_MANIFEST_DIR")
-    );
-    std::fs::read_to_string(&path).expect("example file")
-}
+use statecheck_synth::{check, emit, families, synthesize, Engine, Outcome, Problem};
 
 /// Check an emitted supervisor text in the closed loop.
 fn check_text(p: &Problem, text: &str) -> check::Report {

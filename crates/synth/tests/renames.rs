@@ -4,36 +4,10 @@
 //! controllability rule holds across renames, renames work inside components, and the tick
 //! semantics keeps the chart's own input names.
 
-use statecheck_synth::{extract, synthesize, Engine, Outcome, Problem};
+mod common;
+use common::{example, model_of, problem_of, sizes};
 
-fn model_of(text: &str) -> statecheck_model::Model {
-    let (file, diags) = statecheck_syntax::parse(text);
-    assert!(diags.is_empty(), "{diags:?}");
-    let (model, diags) = statecheck_model::check(&file);
-    assert!(!diags.iter().any(|d| d.is_error()), "{diags:?}");
-    model
-}
-
-fn problem_of(text: &str, system: Option<&str>) -> Problem {
-    let model = model_of(text);
-    let sys = extract::find_system(&model, system).expect("system");
-    extract::extract(&model, sys).expect("extract")
-}
-
-fn example(name: &str) -> String {
-    let path = format!(
-        "{}/../../examples/synthesis/{name}",
-        env!("CARGO_MANIFEST_DIR")
-    );
-    std::fs::read_to_string(&path).expect("example file")
-}
-
-fn sizes(p: &Problem, engine: Engine) -> Option<(u128, u128)> {
-    match synthesize(p, engine).expect("synthesis").outcome {
-        Outcome::Supervisor(s) => Some((s.states, s.transitions)),
-        Outcome::Empty(_) => None,
-    }
-}
+use statecheck_synth::{extract, Engine, Problem};
 
 /// `philosophers_5_renamed.sc` (one `Phil`, one `Fork` chart, ten renaming instances) is the
 /// generated `philosophers_5.sc` (ten copied charts): the same events in the same order, the

@@ -3,33 +3,12 @@
 //! `benchmarks.rs`); a hand-written Supremica file of the small factory; Supremica's marking;
 //! labels that are not `.sc` identifiers; coded errors with positions.
 
+mod common;
+use common::{example, problem_of, sizes};
+
 use statecheck_synth::problem::Kind;
 use statecheck_synth::supremica::{read::read, write::write};
-use statecheck_synth::{extract, synthesize, Engine, Outcome, Problem};
-
-fn problem_of(text: &str, system: Option<&str>) -> Problem {
-    let (file, diags) = statecheck_syntax::parse(text);
-    assert!(diags.is_empty(), "{diags:?}");
-    let (model, diags) = statecheck_model::check(&file);
-    assert!(!diags.iter().any(|d| d.is_error()), "{diags:?}");
-    let sys = extract::find_system(&model, system).expect("system");
-    extract::extract(&model, sys).expect("extract")
-}
-
-fn example(name: &str) -> String {
-    let path = format!(
-        "{}/../../examples/synthesis/{name}",
-        env!("CARGO_MANIFEST_DIR")
-    );
-    std::fs::read_to_string(&path).expect("example file")
-}
-
-fn sizes(p: &Problem, engine: Engine) -> Option<(u128, u128)> {
-    match synthesize(p, engine).expect("synthesis").outcome {
-        Outcome::Supervisor(s) => Some((s.states, s.transitions)),
-        Outcome::Empty(_) => None,
-    }
-}
+use statecheck_synth::{Engine, Problem};
 
 /// `q` (read back) has `p`'s events and automata, by name, plus possibly requirement
 /// observers after them.

@@ -1,27 +1,13 @@
 //! The explicit engine's two-thread pipeline numbers states exactly as one thread does: on
-//! every benchmark family (and a `needs` requirement, forbidden states, a problem without a
-//! supervisor), the store, the successor lists, the kept states and the figures are equal;
+//! every benchmark family (with `needs` requirements and forbidden states among them), the
+//! store, the successor lists, the kept states and the figures are equal;
 //! and a limit ends the two-thread run as it ends the one-thread run (no hang).
 
+mod common;
+use common::{example, problem_of};
+
 use statecheck_synth::families::{self, scaled};
-use statecheck_synth::{explicit, extract, Budget, ErrorKind, Limits, Problem};
-
-fn problem_of(text: &str, system: Option<&str>) -> Problem {
-    let (file, diags) = statecheck_syntax::parse(text);
-    assert!(diags.is_empty(), "{diags:?}");
-    let (model, diags) = statecheck_model::check(&file);
-    assert!(!diags.iter().any(|d| d.is_error()), "{diags:?}");
-    let sys = extract::find_system(&model, system).expect("system");
-    extract::extract(&model, sys).expect("extract")
-}
-
-fn example(name: &str) -> String {
-    let path = format!(
-        "{}/../../examples/synthesis/{name}",
-        env!("CARGO_MANIFEST_DIR")
-    );
-    std::fs::read_to_string(&path).expect("example file")
-}
+use statecheck_synth::{explicit, Budget, ErrorKind, Limits, Problem};
 
 /// The instances: every family at a size of a few thousand to ~10^5 reachable states, so the
 /// pipeline's batches and channels are exercised many times over.

@@ -109,12 +109,7 @@ pub(crate) fn run_auto(
         .iter()
         .map(|&(pi, _)| bl.props[pi].name.as_str())
         .collect();
-    let families = Families::new(p, opts.check.symmetry.as_ref(), &rows);
-    for (i, f) in flags.iter().enumerate() {
-        if families.is_derived(i) {
-            f.store(true, Ordering::Relaxed);
-        }
-    }
+    let families = Families::raising(p, opts.check.symmetry.as_ref(), &rows, &flags);
     let reductions = Reductions::new(bl.props.len());
     let depth = opts.check.depth.map(|d| d as usize);
     let mut got: Vec<Option<Decided>> = vec![None; n];

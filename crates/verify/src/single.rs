@@ -102,12 +102,7 @@ pub(crate) fn run_engine(
         .iter()
         .map(|&(pi, _)| bl.props[pi].name.as_str())
         .collect();
-    let families = Families::new(p, opts.check.symmetry.as_ref(), &rows);
-    for (i, f) in flags.iter().enumerate() {
-        if families.is_derived(i) {
-            f.store(true, Ordering::Relaxed);
-        }
-    }
+    let families = Families::raising(p, opts.check.symmetry.as_ref(), &rows, &flags);
     let reductions = Reductions::new(bl.props.len());
     let mut got: Vec<Option<(PropResult, Meta, _)>> = vec![None; n];
     // Dropped when the engine is done, which wakes the watcher at once.

@@ -112,6 +112,23 @@ impl Families {
         out
     }
 
+    /// [`Families::new`] for the rows named `rows`, with the flag of every derived row raised
+    /// (one flag per row), so that no engine schedules it.
+    pub fn raising(
+        p: &Program,
+        sym: Option<&Arc<Symmetry>>,
+        rows: &[&str],
+        flags: &[Arc<std::sync::atomic::AtomicBool>],
+    ) -> Families {
+        let families = Families::new(p, sym, rows);
+        for (i, f) in flags.iter().enumerate() {
+            if families.is_derived(i) {
+                f.store(true, std::sync::atomic::Ordering::Relaxed);
+            }
+        }
+        families
+    }
+
     /// Is row `i` answered from its representative (so no engine needs to check it)?
     pub fn is_derived(&self, i: usize) -> bool {
         self.derived.get(i).is_some_and(Option::is_some)
