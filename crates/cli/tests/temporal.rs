@@ -441,13 +441,14 @@ fn fam_liveness_lassos_replay() {
     let root = format!("{}/../..", env!("CARGO_MANIFEST_DIR"));
     let live = format!("{root}/examples/fam/liveness/fam_live.sc");
     let scn = |n: &str| format!("{root}/examples/fam/liveness/scenarios/{n}.scn");
-    let sim = |model: &str, scenario: &str| {
+    // `sim MODEL --system SYSTEM --quiet --scenario SCENARIO`: exit code and all output.
+    let sim = |model: &str, system: &str, scenario: &str| {
         let out = Command::new(BIN)
             .args([
                 "sim",
                 model,
                 "--system",
-                "FamLive",
+                system,
                 "--quiet",
                 "--scenario",
                 scenario,
@@ -465,48 +466,24 @@ fn fam_liveness_lassos_replay() {
         ("stall_never_acknowledged", "stall_procedure_completes"),
         ("calibration_never_ends", "recalibrates_after_failure"),
     ] {
-        let (code, text) = sim(&live, &scn(s));
+        let (code, text) = sim(&live, "FamLive", &scn(s));
         assert_eq!(code, Some(4), "{s}: {text}");
         assert!(text.contains(&format!("`{prop}` violated")), "{s}: {text}");
     }
-    // Master + 2 FAMs: a lasso the hunt found (the scenario's comment explains it), replayed.
-    let out = Command::new(BIN)
-        .args([
-            "sim",
-            &format!("{root}/examples/fam/liveness/fam_live2.sc"),
-            "--system",
-            "FamLive2",
-            "--quiet",
-            "--scenario",
-            &scn("calibration_never_ends2"),
-        ])
-        .output()
-        .expect("sim runs");
-    let text =
-        String::from_utf8_lossy(&out.stdout).into_owned() + &String::from_utf8_lossy(&out.stderr);
-    assert_eq!(out.status.code(), Some(4), "{text}");
+    // Master + 2 FAMs: a lasso the hunt found (the scenario's comment explains it), replayed;
+    // and for N = 2..5 the stall lasso built by hand for each bus (the scenarios' comments
+    // give the construction).
+    let live_n = |n: u32| format!("{root}/examples/fam/liveness/fam_live{n}.sc");
+    let (code, text) = sim(&live_n(2), "FamLive2", &scn("calibration_never_ends2"));
+    assert_eq!(code, Some(4), "{text}");
     assert!(
         text.contains("`recalibrates_after_failure` violated"),
         "{text}"
     );
-    // Master + N FAMs, N = 2..5: the stall lasso built by hand for each bus (the scenarios'
-    // comments give the construction), replayed.
     for n in 2..=5 {
-        let out = Command::new(BIN)
-            .args([
-                "sim",
-                &format!("{root}/examples/fam/liveness/fam_live{n}.sc"),
-                "--system",
-                &format!("FamLive{n}"),
-                "--quiet",
-                "--scenario",
-                &scn(&format!("stall_never_acknowledged{n}")),
-            ])
-            .output()
-            .expect("sim runs");
-        let text = String::from_utf8_lossy(&out.stdout).into_owned()
-            + &String::from_utf8_lossy(&out.stderr);
-        assert_eq!(out.status.code(), Some(4), "N = {n}: {text}");
+        let scenario = scn(&format!("stall_never_acknowledged{n}"));
+        let (code, text) = sim(&live_n(n), &format!("FamLive{n}"), &scenario);
+        assert_eq!(code, Some(4), "N = {n}: {text}");
         assert!(
             text.contains("`stall_procedure_completes` violated"),
             "N = {n}: {text}"
@@ -528,12 +505,12 @@ fn fam_liveness_lassos_replay() {
     let only = dir.join("liveness").join("rt.sc");
     std::fs::write(&only, format!("{}{}", &src[..a], &src[b..])).expect("write");
     let only = only.to_string_lossy().into_owned();
-    let (code, text) = sim(&only, &scn("calibration_never_ends"));
+    let (code, text) = sim(&only, "FamLive", &scn("calibration_never_ends"));
     assert_eq!(code, Some(4), "{text}");
     assert!(text.contains("`reaches_target` violated"), "{text}");
     // The stall lasso ends at the target: `reaches_target` holds on it (CCM 1000, not 500,
     // so its assumption fails anyway) and the run completes.
-    let (code, text) = sim(&only, &scn("stall_never_acknowledged"));
+    let (code, text) = sim(&only, "FamLive", &scn("stall_never_acknowledged"));
     assert_eq!(code, Some(0), "{text}");
     // `recalibrates_with_end_stops` (a corrected formula) is violated too: one FBF fault,
     // then no fault and no stall, and a CCM that differs between the master's two processing
@@ -558,7 +535,11 @@ fn fam_liveness_lassos_replay() {
         ),
     )
     .expect("write");
-    let (code, text) = sim(&rec.to_string_lossy(), &scn("fbf_run_never_ends"));
+    let (code, text) = sim(
+        &rec.to_string_lossy(),
+        "FamLive",
+        &scn("fbf_run_never_ends"),
+    );
     assert_eq!(code, Some(4), "{text}");
     assert!(
         text.contains("`recalibrates_with_end_stops` violated"),
@@ -573,7 +554,7 @@ fn fam_liveness_lassos_replay() {
         ),
     )
     .expect("write");
-    let (code, text) = sim(&st.to_string_lossy(), &scn("fbf_run_never_ends"));
+    let (code, text) = sim(&st.to_string_lossy(), "FamLive", &scn("fbf_run_never_ends"));
     assert_eq!(code, Some(0), "{text}");
     // The same construction for master + N FAMs, N = 2..5 (rounds of 2N + 10 ticks), each on
     // a copy of fam_liveN.sc with `recalibrates_with_end_stops` alone.
@@ -595,21 +576,9 @@ fn fam_liveness_lassos_replay() {
             .expect("first");
         let copy = dir.join("liveness").join(format!("rec{n}.sc"));
         std::fs::write(&copy, format!("{}{}}}\n", &src_n[..first], &src_n[a..b])).expect("write");
-        let out = Command::new(BIN)
-            .args([
-                "sim",
-                &copy.to_string_lossy(),
-                "--system",
-                &format!("FamLive{n}"),
-                "--quiet",
-                "--scenario",
-                &scn(&format!("fbf_run_never_ends{n}")),
-            ])
-            .output()
-            .expect("sim runs");
-        let text = String::from_utf8_lossy(&out.stdout).into_owned()
-            + &String::from_utf8_lossy(&out.stderr);
-        assert_eq!(out.status.code(), Some(4), "N = {n}: {text}");
+        let scenario = scn(&format!("fbf_run_never_ends{n}"));
+        let (code, text) = sim(&copy.to_string_lossy(), &format!("FamLive{n}"), &scenario);
+        assert_eq!(code, Some(4), "N = {n}: {text}");
         assert!(
             text.contains("`recalibrates_with_end_stops` violated"),
             "N = {n}: {text}"
