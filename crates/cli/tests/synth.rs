@@ -13,6 +13,20 @@ fn example(name: &str) -> String {
     )
 }
 
+/// `statecheck verify SUP --plant MODEL EXTRA…`: asserts exit 0 and returns standard output.
+fn verify_plant(sup: &std::path::Path, model: &str, extra: &[&str]) -> String {
+    let o = bin()
+        .arg("verify")
+        .arg(sup)
+        .args(["--plant", model])
+        .args(extra)
+        .output()
+        .expect("runs");
+    let stdout = String::from_utf8_lossy(&o.stdout).into_owned();
+    assert_eq!(o.status.code(), Some(0), "{stdout}");
+    stdout
+}
+
 #[test]
 fn synth_small_factory_then_verify() {
     let dir = std::env::temp_dir().join(format!("statecheck-synth-{}", std::process::id()));
@@ -39,14 +53,7 @@ fn synth_small_factory_then_verify() {
     );
     assert!(stdout.contains("start1: in(buf.Empty)"), "{stdout}");
     assert!(stdout.contains("repair1: !in(m2.Down)"), "{stdout}");
-    let o = bin()
-        .arg("verify")
-        .arg(&out)
-        .args(["--plant", &model, "--plant-system", "SmallFactoryRepair"])
-        .output()
-        .expect("runs");
-    let stdout = String::from_utf8_lossy(&o.stdout);
-    assert_eq!(o.status.code(), Some(0), "{stdout}");
+    let stdout = verify_plant(&out, &model, &["--plant-system", "SmallFactoryRepair"]);
     assert!(stdout.contains("controllable, nonblocking"), "{stdout}");
     // The emitted system's own properties hold under the ordinary checker.
     let o = bin()
@@ -146,15 +153,7 @@ fn supervisor_of_a_large_instance_reloads_and_verifies() {
     assert_eq!(o.status.code(), Some(0), "{stdout}");
     assert!(stdout.contains("product 1.400e5"), "{stdout}");
     assert!(stdout.contains("supervisor 12288 states"), "{stdout}");
-    let o = bin()
-        .arg("verify")
-        .arg(&out)
-        .arg("--plant")
-        .arg(&model)
-        .output()
-        .expect("runs");
-    let stdout = String::from_utf8_lossy(&o.stdout);
-    assert_eq!(o.status.code(), Some(0), "{stdout}");
+    let stdout = verify_plant(&out, &model.to_string_lossy(), &[]);
     assert!(stdout.contains("(12288 plant states)"), "{stdout}");
     assert!(stdout.contains("controllable, nonblocking"), "{stdout}");
     let _ = std::fs::remove_dir_all(&dir);
@@ -285,14 +284,7 @@ fn renamed_instances_synthesize_and_verify() {
         text.contains("Event.take0l"),
         "renamed events in the supervisor"
     );
-    let o = bin()
-        .arg("verify")
-        .arg(&out)
-        .args(["--plant", &model])
-        .output()
-        .expect("runs");
-    let stdout = String::from_utf8_lossy(&o.stdout);
-    assert_eq!(o.status.code(), Some(0), "{stdout}");
+    let stdout = verify_plant(&out, &model, &[]);
     assert!(stdout.contains("(81 plant states)"), "{stdout}");
     let _ = std::fs::remove_dir_all(&dir);
 }

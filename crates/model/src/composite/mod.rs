@@ -12,6 +12,7 @@
 
 mod params;
 mod ports;
+mod renames;
 mod scope;
 mod size;
 mod slots;

@@ -216,20 +216,7 @@ impl<'a, 'd> Flattener<'a, 'd> {
         for inst in &body.instances {
             let name = full(&prefix, &inst.name.name);
             let local = if let Some(c) = self.comps.get(inst.chart.name.as_str()).copied() {
-                if let Some(r) = inst.renames.first() {
-                    self.diags.push(
-                        Diagnostic::error(
-                            "E0191",
-                            format!(
-                                "`{}` is a component: only a chart instance renames events",
-                                inst.chart.name
-                            ),
-                            r.span,
-                        )
-                        .with_label("rename of a component instance")
-                        .with_hint("rename the events on the chart instances inside the component"),
-                    );
-                }
+                self.diags.extend(super::renames::refuse_on_component(inst));
                 match &inst.count {
                     // Its length is a literal by now (`params.rs`): elements `cells[0]`, ….
                     Some(ast::Expr::Int(n, _)) => {
