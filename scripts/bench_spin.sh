@@ -11,6 +11,8 @@
 # Usage: scripts/bench_spin.sh [SECONDS] [THREADS]   (defaults 600, all cores; SPIN is
 #        single-threaded: pass 1 for a per-core comparison). Needs gcc, spin, python3.
 #        STATECHECK=path/to/statecheck uses that binary instead of building one.
+#        COLLAPSE=1 compresses both visited sets: ours with `--collapse`, pan compiled with
+#        -DCOLLAPSE (SPIN's own collapse compression); bytes/state then compares the two.
 # Models: the FAM alone (FamAloneSmall) and the closed loop master + 1 FAM (FamSystem; its
 #         Promela reads properties and assumes with "an evaluation error is false", as the IR
 #         does); override with MODELS="file.sc:System file2.sc:System2". The last line of each
@@ -20,6 +22,7 @@ set -eu
 ROOT=$(cd "$(dirname "$0")/.." && pwd)
 LIMIT=${1:-600}
 THREADS=${2:-$(nproc)}
+if [ "${COLLAPSE:-0}" = 1 ]; then OURS_COLLAPSE=--collapse; PAN_COLLAPSE=-DCOLLAPSE; else OURS_COLLAPSE=; PAN_COLLAPSE=; fi
 MODELS=${MODELS:-"$ROOT/examples/fam/fam_alone.sc:FamAloneSmall $ROOT/examples/fam/fam_system.sc:FamSystem"}
 export CARGO_TARGET_DIR=${CARGO_TARGET_DIR:-$ROOT/target}
 if [ -n "${STATECHECK:-}" ]; then
@@ -35,11 +38,11 @@ for entry in $MODELS; do
   model=${entry%%:*}; system=${entry##*:}; name=$(basename "$model" .sc):$system
   rc=0
   "$SC" verify "$model" --system "$system" --engine explicit --threads "$THREADS" \
-    --timeout "$LIMIT" --json > "$TMP/v.json" 2>/dev/null || rc=$?
+    --timeout "$LIMIT" $OURS_COLLAPSE --json > "$TMP/v.json" 2>/dev/null || rc=$?
   s=$(date +%s.%N)
   if "$SC" export promela "$model" --system "$system" -o "$TMP/m.pml" 2> "$TMP/pan.out"; then
     (cd "$TMP" && spin -a m.pml > /dev/null \
-      && gcc -O2 -DSAFETY -DNOFAIR -DMEMLIM=16000 -o pan pan.c 2> /dev/null)
+      && gcc -O2 -DSAFETY -DNOFAIR -DMEMLIM=16000 $PAN_COLLAPSE -o pan pan.c 2> /dev/null)
     s=$(date +%s.%N)
     (cd "$TMP" && timeout -s INT "$LIMIT" ./pan -A -m10000000 > pan.out 2>&1) || true
   fi

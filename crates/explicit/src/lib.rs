@@ -21,6 +21,7 @@
 //! exploration by a second search, with parent links, up to the depth of the deepest violation,
 //! within what is left of the time budget.
 
+mod collapse;
 mod error;
 mod expand;
 pub mod ltl;
@@ -89,6 +90,10 @@ pub struct Options {
     /// (state counts are orbits), with the interpreter's successors, and maps counterexamples
     /// back to concrete runs. Temporal properties are checked without it.
     pub symmetry: Option<std::sync::Arc<statecheck_ir::symmetry::Symmetry>>,
+    /// Collapse compression of the visited set (`verify --collapse`, docs/verification.md): states of
+    /// more than 128 bits are stored as two numbers of their halves' distinct values — the
+    /// same states and results in less memory, at some cost in time.
+    pub collapse: bool,
 }
 
 /// How the explicit engine computes successors.
@@ -137,6 +142,7 @@ impl Default for Options {
             reduce_inputs: true,
             stop: None,
             symmetry: None,
+            collapse: false,
         }
     }
 }
@@ -250,6 +256,10 @@ pub struct Stats {
     pub symmetry: bool,
     /// Why symmetry reduction was asked for but not used.
     pub symmetry_note: Option<String>,
+    /// Under collapse compression ([`Options::collapse`]): the distinct values of the low and
+    /// the high half of the state vector (each stored once). `None` without it, or when a
+    /// state fits in 128 bits (then it is stored as it is).
+    pub collapse_leaves: Option<Vec<u64>>,
 }
 
 impl Stats {
@@ -592,8 +602,10 @@ fn run<K: Key>(
         max_states: opts.max_states,
         timeout: opts.timeout,
         stop: opts.stop.clone(),
+        collapse: opts.collapse,
     };
     let s = search::<K>(exp, limits, None, progress);
+    stats.collapse_leaves = s.collapse_leaves.clone();
     stats.states = s.states;
     stats.transitions = s.transitions;
     stats.depth = s.depth;

@@ -288,7 +288,7 @@ pub trait Key: Clone + Eq + Send + Sync + 'static {
 }
 
 /// MurmurHash3's 64-bit finaliser.
-fn fmix(mut h: u64) -> u64 {
+pub(crate) fn fmix(mut h: u64) -> u64 {
     h ^= h >> 33;
     h = h.wrapping_mul(0xff51_afd7_ed55_8ccd);
     h ^= h >> 33;

@@ -7,6 +7,7 @@
 //! wins). Block, chunk and shard sizes depend only on the model, never on the thread count, so
 //! the states found, their order, and every result are the same on any number of threads.
 
+use crate::collapse::Collapsed;
 use crate::expand::{Cand, ChunkOut, Expander, Found, StateCheck, StateFind};
 use crate::pack::Key;
 use crate::table::{Shard, Visited, SHARDS};
@@ -24,6 +25,9 @@ pub(crate) struct Limits {
     pub timeout: Option<Duration>,
     /// Raised by another thread: end with [`Limit::Stopped`] after the current block.
     pub stop: Option<std::sync::Arc<std::sync::atomic::AtomicBool>>,
+    /// Store states collapse-compressed ([`crate::collapse`]) when they take more than two
+    /// words.
+    pub collapse: bool,
 }
 
 /// Why a search stopped.
@@ -57,6 +61,8 @@ pub(crate) struct Searched<K> {
     pub table_bytes: u64,
     /// Largest estimate of the memory held (visited set, layers, successor buffers).
     pub peak_bytes: u64,
+    /// Under collapse compression: the distinct values of each leaf.
+    pub collapse_leaves: Option<Vec<u64>>,
     /// With tracking: every layer.
     pub layers: Vec<Layer<K>>,
     pub elapsed: Duration,
@@ -91,6 +97,43 @@ fn insert_shard<K: Key>(
     }
 }
 
+/// [`insert_shard`] for a collapse-compressed set: the candidates' roots (in the same order)
+/// are inserted, the candidates whose root was new are kept.
+#[inline(never)]
+fn insert_shard_collapsed<K: Key>(
+    shard: &mut Shard<u64>,
+    fresh: Vec<Vec<Cand<K>>>,
+    roots: Vec<Vec<u64>>,
+    mut checker: Option<&mut StateCheck<'_, '_>>,
+) -> Inserted<K> {
+    let mut kept = Vec::with_capacity(fresh.len());
+    for (bucket, roots) in fresh.into_iter().zip(roots) {
+        let mut pairs: Vec<(u64, Cand<K>)> = roots.into_iter().zip(bucket).collect();
+        match checker.as_deref_mut() {
+            Some(ch) => shard.insert_retain(&mut pairs, |p| &p.0, |p| ch.check(&p.1)),
+            None => shard.insert_retain(&mut pairs, |p| &p.0, |_| {}),
+        }
+        kept.push(pairs.into_iter().map(|(_, c)| c).collect());
+    }
+    let found = checker.map(|ch| std::mem::take(&mut ch.found));
+    (kept, found.unwrap_or_default())
+}
+
+/// The visited set of a search: plain keys, or collapse-compressed.
+enum Store<K> {
+    Plain(Visited<K>),
+    Collapsed(Box<Collapsed>),
+}
+
+impl<K: Key> Store<K> {
+    fn bytes(&self) -> usize {
+        match self {
+            Store::Plain(v) => v.bytes(),
+            Store::Collapsed(c) => c.bytes(),
+        }
+    }
+}
+
 /// Run a search. With `track = Some(d)`, keep every layer with parent links and stop once
 /// layer `d` is built (for counterexample reconstruction).
 pub(crate) fn search<K: Key>(
@@ -110,8 +153,16 @@ pub(crate) fn search<K: Key>(
         Some(c) => c.pack(exp.packer, m0.state(), &mut words),
         None => exp.packer.pack(m0.state(), &mut words),
     };
-    let mut visited: Visited<K> = Visited::new();
-    visited.insert(&init);
+    let mut visited: Store<K> = if limits.collapse && exp.packer.words > 2 {
+        let mut c = Collapsed::new(exp.packer.words);
+        // An empty set has room for one state.
+        let _ = c.insert(&init);
+        Store::Collapsed(Box::new(c))
+    } else {
+        let mut v = Visited::new();
+        v.insert(&init);
+        Store::Plain(v)
+    };
     let mut frontier: Vec<K> = vec![init];
     let mut frontier_parents: Vec<(u32, u32)> = Vec::new();
     let mut layers: Vec<Layer<K>> = Vec::new();
@@ -169,16 +220,41 @@ pub(crate) fn search<K: Key>(
             }
             let pend = &pending;
             let check_states = exp.checks_states(pend);
-            let new: Vec<Inserted<K>> = visited
-                .shards
-                .par_iter_mut()
-                .zip(checkers.par_iter_mut())
-                .zip(per_shard)
-                .map(|((shard, checker), fresh)| {
-                    checker.reset(pend);
-                    insert_shard(shard, fresh, check_states.then_some(checker))
-                })
-                .collect();
+            let new: Vec<Inserted<K>> = match &mut visited {
+                Store::Plain(v) => v
+                    .shards
+                    .par_iter_mut()
+                    .zip(checkers.par_iter_mut())
+                    .zip(per_shard)
+                    .map(|((shard, checker), fresh)| {
+                        checker.reset(pend);
+                        insert_shard(shard, fresh, check_states.then_some(checker))
+                    })
+                    .collect(),
+                Store::Collapsed(c) => {
+                    let Ok(roots) = c.roots_of(&per_shard) else {
+                        // More distinct halves than 2^32: memory would have run out first.
+                        let held = c.bytes() as u64;
+                        break 'outer End::Limit(Limit::Memory(limits.max_memory.unwrap_or(held)));
+                    };
+                    c.roots
+                        .shards
+                        .par_iter_mut()
+                        .zip(checkers.par_iter_mut())
+                        .zip(per_shard)
+                        .zip(roots)
+                        .map(|(((shard, checker), fresh), roots)| {
+                            checker.reset(pend);
+                            insert_shard_collapsed(
+                                shard,
+                                fresh,
+                                roots,
+                                check_states.then_some(checker),
+                            )
+                        })
+                        .collect()
+                }
+            };
             // Per-state findings: the first in generation order over all shards.
             let mut first: Vec<Option<(u32, u32)>> = vec![None; n_props];
             for (_, f) in &new {
@@ -282,6 +358,10 @@ pub(crate) fn search<K: Key>(
         covered,
         table_bytes: visited.bytes() as u64,
         peak_bytes: peak,
+        collapse_leaves: match &visited {
+            Store::Plain(_) => None,
+            Store::Collapsed(c) => Some(c.leaf_counts()),
+        },
         layers,
         elapsed: start.elapsed(),
     }

@@ -147,6 +147,7 @@ pub fn stats_json(p: &Program, source: &Sources, s: &Stats) -> Value {
         "native_note": s.native_note,
         "symmetry": s.symmetry,
         "symmetry_note": s.symmetry_note,
+        "collapse_leaves": s.collapse_leaves,
     })
 }
 
@@ -399,6 +400,14 @@ fn stats_line(s: &Stats) -> String {
             "{native}\nsymmetry reduction: states are orbits of interchangeable array elements"
         ),
         (false, None) => native,
+    };
+    let native = match &s.collapse_leaves {
+        Some(l) => format!(
+            "{native}\ncollapse compression: {} and {} distinct halves",
+            l.first().copied().unwrap_or(0),
+            l.get(1).copied().unwrap_or(0)
+        ),
+        None => native,
     };
     format!(
         "{} states, {} transitions, depth {}, {:.2} s ({:.0} states/s), {:.1} bytes/state, peak {}, {} thread(s), {}-bit states, branching {}{after}{native}\n",
