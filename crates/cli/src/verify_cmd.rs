@@ -18,7 +18,7 @@ mod watch;
 use crate::load;
 use anyhow::{bail, Result};
 use clap::Args;
-use statecheck_explicit::{Backend, Options, Verdict};
+use statecheck_explicit::{Backend, Collapse, Options, Verdict};
 use std::io::IsTerminal;
 use std::time::Duration;
 
@@ -104,12 +104,17 @@ pub struct VerifyArgs {
     /// states, verdicts, counterexamples and transition counts, more ticks run; for comparing.
     #[arg(long)]
     no_input_reduction: bool,
-    /// Collapse compression of the explicit engine's visited set (as SPIN's COLLAPSE): a
-    /// state of more than 128 bits is stored as the numbers of its two halves' distinct
-    /// values, about a third of the memory on closed loops, the same states and verdicts
-    /// (docs/verification.md, "Collapse compression").
-    #[arg(long)]
+    /// Collapse compression of the explicit engine's visited set from the start (as SPIN's
+    /// COLLAPSE): a state of more than 128 bits is stored as the numbers of its two halves'
+    /// distinct values, less than half the memory on closed loops, the same states and
+    /// verdicts (docs/verification.md, "Collapse compression"). Without this flag or
+    /// --no-collapse, the engine switches to it once its visited set holds two fifths of
+    /// --max-memory.
+    #[arg(long, overrides_with = "no_collapse")]
     collapse: bool,
+    /// Never collapse-compress the visited set (see --collapse).
+    #[arg(long)]
+    no_collapse: bool,
     /// How the explicit engine computes successors: `interpreter` (the IR's register code),
     /// `native` (the C step function compiled by the system's C compiler, cross-checked
     /// against the interpreter), or `auto` (native once a search runs longer than 0.3 s).
@@ -343,7 +348,11 @@ fn options(a: &VerifyArgs, max_memory: Option<u64>, timeout: Option<Duration>) -
         backend: a.backend.into(),
         compiler: Some(std::sync::Arc::new(statecheck_native::CCompiler)),
         reduce_inputs: !a.no_input_reduction,
-        collapse: a.collapse,
+        collapse: match (a.collapse, a.no_collapse) {
+            (true, _) => Collapse::On,
+            (false, true) => Collapse::Off,
+            (false, false) => Collapse::Auto,
+        },
         ..Options::default()
     }
 }

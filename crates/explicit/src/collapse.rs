@@ -11,13 +11,16 @@
 //! many values of the other (the controller). On master + 1 FAM, about a fifth as many
 //! distinct halves as states within 70 ticks, and fewer the deeper the search goes.
 //!
+//! A root goes to the shard of its state's full key (known before the leaves are numbered),
+//! whichever way the state is inserted.
+//!
 //! The two leaf tables are filled in parallel (one thread each), each in a fixed order of the
 //! block's successors, so their numbering, and hence every result, does not depend on the
 //! thread count.
 
 use crate::expand::Cand;
 use crate::pack::Key;
-use crate::table::Visited;
+use crate::table::{shard_of, Visited};
 
 /// Leaf numbers are `u32`; a table this full is refused (a memory limit in practice: it
 /// would take tens of gigabytes first).
@@ -54,10 +57,30 @@ impl Collapsed {
     /// Insert one state (single-threaded use); true when it is new.
     pub fn insert<K: Key>(&mut self, key: &K) -> Result<bool, Full> {
         let mut w = vec![0u64; self.words];
-        key.to_words(&mut w);
+        self.insert_with(key, &mut w)
+    }
+
+    /// [`Collapsed::insert`] with a scratch vector of `words` words.
+    fn insert_with<K: Key>(&mut self, key: &K, w: &mut [u64]) -> Result<bool, Full> {
+        key.to_words(w);
         let lo = self.leaves[0].intern(&w[..self.split])?;
         let hi = self.leaves[1].intern(&w[self.split..])?;
-        Ok(self.roots.insert(&root(lo, hi)))
+        // The shard of the full key, as for a block's candidates (`search.rs`).
+        let r = root(lo, hi);
+        Ok(self.roots.shards[shard_of(key.hash64())].insert(&r, r.hash64()))
+    }
+
+    /// The compressed set of the states of a plain one, which is consumed shard by shard (so
+    /// that at most one plain shard is held beside the compressed set).
+    pub fn from_plain<K: Key>(words: usize, mut plain: Visited<K>) -> Result<Collapsed, Full> {
+        let mut c = Collapsed::new(words);
+        let mut w = vec![0u64; words];
+        for shard in &mut plain.shards {
+            for key in std::mem::take(shard).keys() {
+                c.insert_with(key, &mut w)?;
+            }
+        }
+        Ok(c)
     }
 
     /// The root of every candidate of a block, in the same nesting (shard, bucket, position).
@@ -221,6 +244,25 @@ mod tests {
         }
         assert_eq!(set.roots.len(), 1200);
         assert_eq!(set.leaf_counts(), vec![60, 20]);
+    }
+
+    #[test]
+    fn a_plain_set_converts_to_the_same_states() {
+        let key = |k: u64| [k % 70, 0, k / 70, 9];
+        let mut plain: Visited<[u64; 4]> = Visited::new();
+        for k in 0..5_000u64 {
+            plain.insert(&key(k));
+        }
+        let Ok(mut c) = Collapsed::from_plain(4, plain) else {
+            panic!("5 000 states fit")
+        };
+        assert_eq!(c.roots.len(), 5_000);
+        // Low halves (k % 70, 0): 70 of them; high ones (k / 70, 9): k / 70 in 0..=71.
+        assert_eq!(c.leaf_counts(), vec![70, 72]);
+        for k in 0..5_000u64 {
+            assert_eq!(c.insert(&key(k)).ok(), Some(false));
+        }
+        assert_eq!(c.insert(&key(5_000)).ok(), Some(true));
     }
 
     #[test]

@@ -90,10 +90,23 @@ pub struct Options {
     /// (state counts are orbits), with the interpreter's successors, and maps counterexamples
     /// back to concrete runs. Temporal properties are checked without it.
     pub symmetry: Option<std::sync::Arc<statecheck_ir::symmetry::Symmetry>>,
-    /// Collapse compression of the visited set (`verify --collapse`, docs/verification.md): states of
-    /// more than 128 bits are stored as two numbers of their halves' distinct values — the
-    /// same states and results in less memory, at some cost in time.
-    pub collapse: bool,
+    /// Collapse compression of the visited set (docs/verification.md): states of more than
+    /// 128 bits stored as the numbers of their halves' distinct values — the same states and
+    /// results in less memory, at some cost in time.
+    pub collapse: Collapse,
+}
+
+/// When the explicit engine compresses its visited set ([`Options::collapse`]).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum Collapse {
+    /// Never (`verify --no-collapse`).
+    Off,
+    /// Once the plain set holds two fifths of the memory limit (the default): a search that
+    /// fits stays as fast as without it, one that would not fit goes on compressed.
+    #[default]
+    Auto,
+    /// From the start (`verify --collapse`).
+    On,
 }
 
 /// How the explicit engine computes successors.
@@ -142,7 +155,7 @@ impl Default for Options {
             reduce_inputs: true,
             stop: None,
             symmetry: None,
-            collapse: false,
+            collapse: Collapse::Auto,
         }
     }
 }
@@ -260,6 +273,9 @@ pub struct Stats {
     /// the high half of the state vector (each stored once). `None` without it, or when a
     /// state fits in 128 bits (then it is stored as it is).
     pub collapse_leaves: Option<Vec<u64>>,
+    /// Under collapse compression: the states stored when it began (1: from the start; more
+    /// when [`Collapse::Auto`] switched to it on the way).
+    pub collapse_from: Option<u64>,
 }
 
 impl Stats {
@@ -606,6 +622,7 @@ fn run<K: Key>(
     };
     let s = search::<K>(exp, limits, None, progress);
     stats.collapse_leaves = s.collapse_leaves.clone();
+    stats.collapse_from = s.collapse_from;
     stats.states = s.states;
     stats.transitions = s.transitions;
     stats.depth = s.depth;

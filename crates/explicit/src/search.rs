@@ -11,7 +11,7 @@ use crate::collapse::Collapsed;
 use crate::expand::{Cand, ChunkOut, Expander, Found, StateCheck, StateFind};
 use crate::pack::Key;
 use crate::table::{Shard, Visited, SHARDS};
-use crate::{Limit, Progress};
+use crate::{Collapse, Limit, Progress};
 use rayon::prelude::*;
 use statecheck_ir::Machine;
 use std::time::{Duration, Instant};
@@ -25,9 +25,9 @@ pub(crate) struct Limits {
     pub timeout: Option<Duration>,
     /// Raised by another thread: end with [`Limit::Stopped`] after the current block.
     pub stop: Option<std::sync::Arc<std::sync::atomic::AtomicBool>>,
-    /// Store states collapse-compressed ([`crate::collapse`]) when they take more than two
-    /// words.
-    pub collapse: bool,
+    /// When to store states collapse-compressed ([`crate::collapse`]; only states of more
+    /// than two words are).
+    pub collapse: Collapse,
 }
 
 /// Why a search stopped.
@@ -63,6 +63,8 @@ pub(crate) struct Searched<K> {
     pub peak_bytes: u64,
     /// Under collapse compression: the distinct values of each leaf.
     pub collapse_leaves: Option<Vec<u64>>,
+    /// Under collapse compression: the states stored when it began.
+    pub collapse_from: Option<u64>,
     /// With tracking: every layer.
     pub layers: Vec<Layer<K>>,
     pub elapsed: Duration,
@@ -153,10 +155,13 @@ pub(crate) fn search<K: Key>(
         Some(c) => c.pack(exp.packer, m0.state(), &mut words),
         None => exp.packer.pack(m0.state(), &mut words),
     };
-    let mut visited: Store<K> = if limits.collapse && exp.packer.words > 2 {
+    let wide = exp.packer.words > 2;
+    let mut collapse_from = None;
+    let mut visited: Store<K> = if limits.collapse == Collapse::On && wide {
         let mut c = Collapsed::new(exp.packer.words);
         // An empty set has room for one state.
         let _ = c.insert(&init);
+        collapse_from = Some(1);
         Store::Collapsed(Box::new(c))
     } else {
         let mut v = Visited::new();
@@ -289,6 +294,18 @@ pub(crate) fn search<K: Key>(
                 }
                 next.extend(bucket.into_iter().map(|c| c.key));
             }
+            if let (Store::Plain(v), Collapse::Auto, true, Some(m)) =
+                (&mut visited, limits.collapse, wide, limits.max_memory)
+            {
+                if v.bytes() as u64 > m / 5 * 2 {
+                    let stored = v.len() as u64;
+                    let Ok(c) = Collapsed::from_plain(exp.packer.words, std::mem::take(v)) else {
+                        break 'outer End::Limit(Limit::Memory(m));
+                    };
+                    visited = Store::Collapsed(Box::new(c));
+                    collapse_from = Some(stored);
+                }
+            }
             let table = visited.bytes() as u64;
             let held = table
                 + layers_bytes
@@ -362,6 +379,7 @@ pub(crate) fn search<K: Key>(
             Store::Plain(_) => None,
             Store::Collapsed(c) => Some(c.leaf_counts()),
         },
+        collapse_from,
         layers,
         elapsed: start.elapsed(),
     }

@@ -219,6 +219,12 @@ impl<K: Key> Shard<K> {
         }
     }
 
+    /// The keys stored in the slots (the key equal to [`Key::empty`], if stored, is not
+    /// among them: it can only be a 64-bit key, which collapse compression never converts).
+    pub fn keys(&self) -> impl Iterator<Item = &K> {
+        self.slots.iter().filter(|k| !k.is_empty())
+    }
+
     /// Bytes held by this shard.
     pub fn bytes(&self) -> usize {
         self.slots.len() * std::mem::size_of::<K>() + self.heap

@@ -148,6 +148,7 @@ pub fn stats_json(p: &Program, source: &Sources, s: &Stats) -> Value {
         "symmetry": s.symmetry,
         "symmetry_note": s.symmetry_note,
         "collapse_leaves": s.collapse_leaves,
+        "collapse_from": s.collapse_from,
     })
 }
 
@@ -401,13 +402,17 @@ fn stats_line(s: &Stats) -> String {
         ),
         (false, None) => native,
     };
-    let native = match &s.collapse_leaves {
-        Some(l) => format!(
-            "{native}\ncollapse compression: {} and {} distinct halves",
+    let native = match (&s.collapse_leaves, s.collapse_from) {
+        (Some(l), from) => format!(
+            "{native}\ncollapse compression{}: {} and {} distinct halves",
+            match from {
+                Some(n) if n > 1 => format!(" (from {n} states on)"),
+                _ => String::new(),
+            },
             l.first().copied().unwrap_or(0),
             l.get(1).copied().unwrap_or(0)
         ),
-        None => native,
+        (None, _) => native,
     };
     format!(
         "{} states, {} transitions, depth {}, {:.2} s ({:.0} states/s), {:.1} bytes/state, peak {}, {} thread(s), {}-bit states, branching {}{after}{native}\n",
