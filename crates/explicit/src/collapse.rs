@@ -183,10 +183,12 @@ impl Leaves {
         }
     }
 
-    /// Double the table and place every value again.
+    /// Grow the table by half and place every value again (by half, not double: a large
+    /// table then sits between loads 0.53 and 0.8, and growing holds 2.5 times the old size
+    /// at once, not 3).
     #[cold]
     fn grow(&mut self) {
-        let cap = (self.numbers.len() * 2).max(1024);
+        let cap = (self.numbers.len() * 3 / 2).max(1024);
         let w = self.width;
         let values = std::mem::replace(&mut self.values, vec![0; cap * w]);
         let numbers = std::mem::replace(&mut self.numbers, vec![0; cap]);
