@@ -74,6 +74,22 @@ pub(crate) struct Searched<K> {
 /// generation order) and the per-state properties they decide.
 type Inserted<K> = (Vec<Vec<Cand<K>>>, Vec<StateFind>);
 
+/// Insert one bucket's items into `shard` by `key`, in order, keeping the items whose key was
+/// new and checking the per-state properties on their candidates (with a checker).
+#[inline(always)]
+fn retain_new<K: Key, S: Key, T>(
+    shard: &mut Shard<S>,
+    bucket: &mut Vec<T>,
+    key: impl Fn(&T) -> &S,
+    cand: impl Fn(&T) -> &Cand<K>,
+    checker: Option<&mut StateCheck<'_, '_>>,
+) {
+    match checker {
+        Some(ch) => shard.insert_retain(bucket, key, |t| ch.check(cand(t))),
+        None => shard.insert_retain(bucket, key, |_| {}),
+    }
+}
+
 /// Insert a block's successors of one shard, in generation order; keep the new ones and check
 /// the per-state properties on them (with a checker). Called once per shard and block, so kept
 /// out of line: profiles then show the insertion phase on its own.
@@ -81,22 +97,13 @@ type Inserted<K> = (Vec<Vec<Cand<K>>>, Vec<StateFind>);
 fn insert_shard<K: Key>(
     shard: &mut Shard<K>,
     mut fresh: Vec<Vec<Cand<K>>>,
-    checker: Option<&mut StateCheck<'_, '_>>,
+    mut checker: Option<&mut StateCheck<'_, '_>>,
 ) -> Inserted<K> {
-    match checker {
-        Some(ch) => {
-            for bucket in &mut fresh {
-                shard.insert_retain(bucket, |c| &c.key, |c| ch.check(c));
-            }
-            (fresh, std::mem::take(&mut ch.found))
-        }
-        None => {
-            for bucket in &mut fresh {
-                shard.insert_retain(bucket, |c| &c.key, |_| {});
-            }
-            (fresh, Vec::new())
-        }
+    for bucket in &mut fresh {
+        retain_new(shard, bucket, |c| &c.key, |c| c, checker.as_deref_mut());
     }
+    let found = checker.map(|ch| std::mem::take(&mut ch.found));
+    (fresh, found.unwrap_or_default())
 }
 
 /// [`insert_shard`] for a collapse-compressed set: the candidates' roots (in the same order)
@@ -111,10 +118,13 @@ fn insert_shard_collapsed<K: Key>(
     let mut kept = Vec::with_capacity(fresh.len());
     for (bucket, roots) in fresh.into_iter().zip(roots) {
         let mut pairs: Vec<(u64, Cand<K>)> = roots.into_iter().zip(bucket).collect();
-        match checker.as_deref_mut() {
-            Some(ch) => shard.insert_retain(&mut pairs, |p| &p.0, |p| ch.check(&p.1)),
-            None => shard.insert_retain(&mut pairs, |p| &p.0, |_| {}),
-        }
+        retain_new(
+            shard,
+            &mut pairs,
+            |p| &p.0,
+            |p| &p.1,
+            checker.as_deref_mut(),
+        );
         kept.push(pairs.into_iter().map(|(_, c)| c).collect());
     }
     let found = checker.map(|ch| std::mem::take(&mut ch.found));
