@@ -122,39 +122,35 @@ pub fn check_justice(j: &Justice, method: Method, limits: &Limits) -> LiveOutcom
                 owned = j.without_compassion();
                 &owned
             };
-            // First bounded persistence ([`persistence`]), which needs no counter, with a
-            // quarter of the time left; it answers at once when it does not apply.
-            let quarter = [limits.deadline, limits.attempt_deadline]
-                .into_iter()
-                .flatten()
-                .min()
-                .map(|d| Instant::now() + d.saturating_duration_since(Instant::now()) / 4);
-            let first = match quarter {
-                Some(h) => limits.attempt_until(h),
-                None => limits.clone(),
-            };
-            if let LiveOutcome::Proved = persistence(j, &first) {
+            // k-liveness first, with an eighth of the time: a response the acceptance leaves
+            // within a few firings is proved with a small k at once. Then bounded persistence
+            // ([`persistence`], no counter; it answers at once when it does not apply) with
+            // three quarters of what is left: a slow response (a plant that needs a hundred
+            // ticks or more) needs k-liveness to relate a large counter to the plant's
+            // progress, which IC3 rarely finds, while persistence proves it given the time
+            // (the linear drive's `run_reaches_left`: 162 s of it, docs/case-studies/
+            // temporal.md). Then k-liveness again, from the k it had reached.
+            // (Without a deadline persistence goes first: it ends by its own bounds, and
+            // k-liveness would not.)
+            let mut k = 0;
+            let timed = limits.deadline.is_some() || limits.attempt_deadline.is_some();
+            if timed {
+                // Only a proof or the run's end is final here: a depth bound or an IC3
+                // failure at some k leaves persistence its chance (and comes back below).
+                match klive_from(j, &mut k, limits, &share(limits, 1, 8)) {
+                    Some(LiveOutcome::Proved) => return LiveOutcome::Proved,
+                    Some(LiveOutcome::Unknown(why)) if limits.expired().is_some() => {
+                        return LiveOutcome::Unknown(why)
+                    }
+                    _ => {}
+                }
+            }
+            if let LiveOutcome::Proved = persistence(j, &share(limits, 3, 4)) {
                 return LiveOutcome::Proved;
             }
-            // k doubles: a proof for some k is a proof for every larger one, and a counter
-            // reached at k only says that k was too small, so a run whose acceptance fires
-            // 100 times costs 8 IC3 calls instead of 101.
-            let mut k = 0;
-            loop {
-                if let Some(why) = limits.expired() {
-                    return LiveOutcome::Unknown(why);
-                }
-                if k > MAX_K {
-                    return LiveOutcome::Unknown(format!("k-liveness reached k = {MAX_K}"));
-                }
-                let aig = klive(j, k);
-                match Engine::Ic3.run(&aig, limits) {
-                    Outcome::Proved(_) => return LiveOutcome::Proved,
-                    Outcome::Reached(_) => k = (2 * k).max(1),
-                    Outcome::Bounded(d) => return LiveOutcome::Bounded(d),
-                    Outcome::Unknown(why) => return LiveOutcome::Unknown(why),
-                }
-            }
+            klive_from(j, &mut k, limits, limits).unwrap_or_else(|| {
+                LiveOutcome::Unknown(limits.expired().unwrap_or_else(|| "time limit".into()))
+            })
         }
         Method::L2s(engine) => {
             let l = l2s(j);
@@ -172,6 +168,54 @@ pub fn check_justice(j: &Justice, method: Method, limits: &Limits) -> LiveOutcom
                         .unwrap_or(0);
                     LiveOutcome::Lasso { trace, loop_start }
                 }
+            }
+        }
+    }
+}
+
+/// `limits` with the attempt ending after `num / den` of the time left (unchanged without a
+/// deadline).
+fn share(limits: &Limits, num: u32, den: u32) -> Limits {
+    let end = [limits.deadline, limits.attempt_deadline]
+        .into_iter()
+        .flatten()
+        .min()
+        .map(|d| Instant::now() + d.saturating_duration_since(Instant::now()) * num / den);
+    match end {
+        Some(e) => limits.attempt_until(e),
+        None => limits.clone(),
+    }
+}
+
+/// k-liveness for k = `*k`, then doubling (a proof for some k is a proof for every larger one,
+/// and a counter reached at k only says that k was too small, so a run whose acceptance fires
+/// 100 times costs 8 IC3 calls instead of 101), within `slice`. The answer when there is one
+/// (a proof, a depth bound, or `outer`'s limits or k's bound ending the check); `None` when
+/// only `slice` ran out, with `*k` the value to go on from.
+fn klive_from(j: &Justice, k: &mut u32, outer: &Limits, slice: &Limits) -> Option<LiveOutcome> {
+    loop {
+        if let Some(why) = outer.expired() {
+            return Some(LiveOutcome::Unknown(why));
+        }
+        if slice.expired().is_some() {
+            return None;
+        }
+        if *k > MAX_K {
+            return Some(LiveOutcome::Unknown(format!(
+                "k-liveness reached k = {MAX_K}"
+            )));
+        }
+        let aig = klive(j, *k);
+        match Engine::Ic3.run(&aig, slice) {
+            Outcome::Proved(_) => return Some(LiveOutcome::Proved),
+            Outcome::Reached(_) => *k = (2 * *k).max(1),
+            Outcome::Bounded(d) => return Some(LiveOutcome::Bounded(d)),
+            Outcome::Unknown(why) => {
+                return match outer.expired() {
+                    Some(w) => Some(LiveOutcome::Unknown(w)),
+                    None if slice.expired().is_some() => None,
+                    None => Some(LiveOutcome::Unknown(why)),
+                };
             }
         }
     }
