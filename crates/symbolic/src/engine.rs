@@ -97,6 +97,16 @@ impl Limits {
         }
     }
 
+    /// The time until the earlier of the run's and the attempt's deadline (`None` without
+    /// either).
+    pub fn time_left(&self) -> Option<std::time::Duration> {
+        [self.deadline, self.attempt_deadline]
+            .into_iter()
+            .flatten()
+            .min()
+            .map(|d| d.saturating_duration_since(Instant::now()))
+    }
+
     /// The limits of work shared between attempts (no attempt budget).
     pub fn for_run(&self) -> Limits {
         Limits {

@@ -176,13 +176,8 @@ pub fn check_justice(j: &Justice, method: Method, limits: &Limits) -> LiveOutcom
 /// `limits` with the attempt ending after `num / den` of the time left (unchanged without a
 /// deadline).
 fn share(limits: &Limits, num: u32, den: u32) -> Limits {
-    let end = [limits.deadline, limits.attempt_deadline]
-        .into_iter()
-        .flatten()
-        .min()
-        .map(|d| Instant::now() + d.saturating_duration_since(Instant::now()) * num / den);
-    match end {
-        Some(e) => limits.attempt_until(e),
+    match limits.time_left() {
+        Some(left) => limits.attempt_until(Instant::now() + left * num / den),
         None => limits.clone(),
     }
 }

@@ -190,11 +190,7 @@ fn next_target(t: usize, max: usize) -> usize {
 
 /// IC3's budget for one first state: an eighth of the time left, between 0.5 s and 10 s.
 fn ic3_slice(limits: &Limits) -> Duration {
-    let left = [limits.deadline, limits.attempt_deadline]
-        .into_iter()
-        .flatten()
-        .min()
-        .map(|d| d.saturating_duration_since(Instant::now()));
+    let left = limits.time_left();
     left.map_or(Duration::from_secs(10), |l| {
         (l / 8).clamp(Duration::from_millis(500), Duration::from_secs(10))
     })
