@@ -136,6 +136,6 @@ fn verdict(out: Outcome) -> String {
         Outcome::Proved(_) => "proved".to_string(),
         Outcome::Reached(t) => format!("reached at {} frames", t.inputs.len()),
         Outcome::Bounded(k) => format!("bounded {k}"),
-        Outcome::Unknown(w) => format!("unknown ({w})"),
+        Outcome::Unknown { why: w, .. } => format!("unknown ({w})"),
     }
 }

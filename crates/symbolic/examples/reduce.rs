@@ -16,7 +16,7 @@ fn verdict(o: &Outcome) -> String {
             ))
         ),
         Outcome::Bounded(k) => format!("bounded {k}"),
-        Outcome::Unknown(w) => format!("unknown: {w}"),
+        Outcome::Unknown { why: w, .. } => format!("unknown: {w}"),
     }
 }
 

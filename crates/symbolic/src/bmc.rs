@@ -18,7 +18,7 @@ pub fn bmc(aig: &Aig, limits: &Limits) -> Outcome {
             return Outcome::Bounded(k);
         }
         if let Some(why) = limits.expired() {
-            return Outcome::Unknown(why);
+            return Outcome::unknown_after(why, k);
         }
         for &c in &aig.constraints {
             let x = u.lit(&mut s, c, k);
@@ -30,7 +30,7 @@ pub fn bmc(aig: &Aig, limits: &Limits) -> Outcome {
             Some(false) => {
                 s.add(&[!b]);
             }
-            None => return Outcome::Unknown(limits.why_interrupted()),
+            None => return Outcome::unknown_after(limits.why_interrupted(), k),
         }
         k += 1;
     }

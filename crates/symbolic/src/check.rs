@@ -124,12 +124,16 @@ impl Reductions {
                     Outcome::Proved(None)
                 }
                 Err(e) => {
-                    Outcome::Unknown(format!("the localization invariant does not check: {e}"))
+                    Outcome::unknown(format!("the localization invariant does not check: {e}"))
                 }
             },
+            // The retimed problem's frames are one more than the original's.
+            Outcome::Unknown { why, cleared } => {
+                Outcome::unknown_after(why, cleared.saturating_sub(1))
+            }
             out => out,
         };
-        if matches!(out, Outcome::Unknown(_)) {
+        if matches!(out, Outcome::Unknown { .. }) {
             self.retimed
                 .lock()
                 .unwrap_or_else(|e| e.into_inner())
@@ -262,7 +266,7 @@ fn run_with(
     // most latches (`crate::localize`), so its quick attempt would be IC3's again.
     if !ready && engine != Engine::Cegar {
         let quick = engine.run(aig, &limits.attempt_until(Instant::now() + QUICK));
-        if !matches!(quick, Outcome::Unknown(_)) || limits.expired().is_some() {
+        if !matches!(quick, Outcome::Unknown { .. }) || limits.expired().is_some() {
             return quick;
         }
     }
@@ -308,7 +312,7 @@ fn run_with(
         _ => engine.run(&red.aig, limits),
     };
     match red.lift(aig, out) {
-        Outcome::Unknown(why) if why == SPURIOUS => engine.run(aig, limits),
+        Outcome::Unknown { why, .. } if why == SPURIOUS => engine.run(aig, limits),
         out => out,
     }
 }
@@ -562,7 +566,10 @@ fn sym_result(
             r.verdict = Verdict::Bounded;
             r.depth = k as u64;
         }
-        Outcome::Unknown(why) => reason = Some(why),
+        Outcome::Unknown { why, cleared } => {
+            r.depth = cleared as u64;
+            reason = Some(why);
+        }
     }
     SymResult {
         result: r,

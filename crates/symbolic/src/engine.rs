@@ -66,8 +66,32 @@ pub enum Outcome {
     Proved(Option<Invariant>),
     /// No trace of at most this many frames reaches it (a depth bound stopped the search).
     Bounded(usize),
-    /// A limit stopped the engine; the text says which.
-    Unknown(String),
+    /// A limit stopped the engine before it decided.
+    Unknown {
+        /// Which limit stopped it, or what failed.
+        why: String,
+        /// No trace of at most this many frames reaches the bad output: the depth the engine
+        /// had cleared when it stopped (0 when it knows none).
+        cleared: usize,
+    },
+}
+
+impl Outcome {
+    /// An `unknown` with no depth cleared.
+    pub fn unknown(why: impl Into<String>) -> Outcome {
+        Outcome::Unknown {
+            why: why.into(),
+            cleared: 0,
+        }
+    }
+
+    /// An `unknown` after clearing `cleared` frames.
+    pub fn unknown_after(why: impl Into<String>, cleared: usize) -> Outcome {
+        Outcome::Unknown {
+            why: why.into(),
+            cleared,
+        }
+    }
 }
 
 /// The reason of an `unknown` when a SAT call gave no answer and no limit had expired.

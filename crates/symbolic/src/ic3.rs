@@ -232,6 +232,9 @@ fn run_ic3(
     };
     let r = if resumed { m.resume() } else { m.run() };
     m.st.frames = m.frames.len();
+    // The frontier is the last frame; every level below it has no bad state, so no trace of
+    // at most that many frames reaches the bad output.
+    let cleared = m.frames.len().saturating_sub(1);
     *saved = match &r {
         Err(_) if m.frames.len() >= 2 => Ic3Frames {
             frames: std::mem::take(&mut m.frames),
@@ -244,10 +247,10 @@ fn run_ic3(
         Ok(Some(inv)) => Outcome::Proved(Some(inv)),
         Ok(None) => match crate::bmc::bmc(aig, limits) {
             // A counterexample exists: find a shortest one.
-            Outcome::Bounded(_) => Outcome::Unknown("counterexample not rebuilt".into()),
+            Outcome::Bounded(_) => Outcome::unknown_after("counterexample not rebuilt", cleared),
             o => o,
         },
-        Err(why) => Outcome::Unknown(why),
+        Err(why) => Outcome::unknown_after(why, cleared),
     };
     (outcome, m.st)
 }
@@ -810,7 +813,7 @@ mod tests {
             ..Limits::default()
         };
         let out = ic3_resume(&g, &stopped, &Vec::new(), &mut saved);
-        assert!(matches!(out, Outcome::Unknown(_)), "{out:?}");
+        assert!(matches!(out, Outcome::Unknown { .. }), "{out:?}");
         // Frames 0..=2 were open when the depth bound stopped it.
         assert_eq!(saved.depth(), 3);
         let Outcome::Proved(Some(inv)) =
@@ -820,6 +823,37 @@ mod tests {
         };
         assert!(crate::cert::check(&g, &inv).is_ok());
         assert_eq!(saved.depth(), 0, "a decided attempt leaves no frames");
+    }
+
+    #[test]
+    fn an_unknown_reports_the_frames_below_its_frontier_as_cleared() {
+        let mut g = shift(6, Lit::FALSE).0;
+        // By hand: latch 5 holds first in tick 5, so the shortest trace to it has 6 frames and
+        // no engine may claim more than 5 frames cleared.
+        g.bad = vec![Lit::var_lit(g.latches[5].var)];
+        for d in 0..5 {
+            let bound = Limits {
+                max_depth: Some(d),
+                ..Limits::default()
+            };
+            match ic3(&g, &bound) {
+                // Stopped opening frontier d + 1: frames 0..=d cleared. Or its obligations
+                // found a longer trace at an earlier frontier, which BMC could not rebuild
+                // within the bound: the frames below that frontier are cleared. Never more
+                // than the 5 frames the shortest trace allows.
+                Outcome::Unknown { why, cleared } => {
+                    if why.starts_with("depth bound") {
+                        assert_eq!(cleared, d + 1, "bound {d}");
+                    } else {
+                        assert!(cleared <= d + 1, "bound {d}: {why}, {cleared}");
+                    }
+                    assert!(cleared <= 5, "bound {d}: {cleared}");
+                }
+                // IC3's obligations may find the trace before the bound stops it.
+                Outcome::Reached(t) => assert_eq!(t.inputs.len(), 6, "bound {d}"),
+                out => panic!("bound {d}: {out:?}"),
+            }
+        }
     }
 
     #[test]
@@ -835,7 +869,7 @@ mod tests {
             ..Limits::default()
         };
         let out = ic3_resume(&g, &stopped, &Vec::new(), &mut saved);
-        assert!(matches!(out, Outcome::Unknown(_)), "{out:?}");
+        assert!(matches!(out, Outcome::Unknown { .. }), "{out:?}");
         assert_eq!(saved.depth(), 2, "{out:?}");
         match ic3_resume(&g, &Limits::default(), &Vec::new(), &mut saved) {
             Outcome::Reached(t) => {

@@ -31,7 +31,7 @@ pub fn kind(aig: &Aig, limits: &Limits) -> Outcome {
             return Outcome::Bounded(k);
         }
         if let Some(why) = limits.expired() {
-            return Outcome::Unknown(why);
+            return Outcome::unknown_after(why, k);
         }
         // Base case: frame k from the reset state.
         for &c in &aig.constraints {
@@ -42,7 +42,7 @@ pub fn kind(aig: &Aig, limits: &Limits) -> Outcome {
         match bs.solve(&[b]) {
             Some(true) => return Outcome::Reached(extract(&mut bu, &mut bs, k)),
             Some(false) => bs.add(&[!b]),
-            None => return Outcome::Unknown(limits.why_interrupted()),
+            None => return Outcome::unknown_after(limits.why_interrupted(), k),
         }
         // Step case: frames 0..=k free, bad only in frame k, states distinct.
         for &c in &aig.constraints {
@@ -64,10 +64,10 @@ pub fn kind(aig: &Aig, limits: &Limits) -> Outcome {
             match ss.solve(&[b]) {
                 Some(false) => return Outcome::Proved(None),
                 Some(true) => {}
-                None => return Outcome::Unknown(limits.why_interrupted()),
+                None => return Outcome::unknown_after(limits.why_interrupted(), k + 1),
             }
             if let Some(why) = limits.expired() {
-                return Outcome::Unknown(why);
+                return Outcome::unknown_after(why, k + 1);
             }
             let states: Vec<Vec<bool>> = (0..=k)
                 .map(|t| {

@@ -76,7 +76,7 @@ fn our_verdicts_equal_abc_pdr() {
                 ..Limits::default()
             };
             let mut out = Engine::Ic3.run(&g, &lim);
-            if matches!(out, Outcome::Unknown(_)) && !abc_holds {
+            if matches!(out, Outcome::Unknown { .. }) && !abc_holds {
                 let lim = Limits {
                     deadline: Some(Instant::now() + Duration::from_secs(60)),
                     ..Limits::default()

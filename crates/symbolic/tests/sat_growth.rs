@@ -116,7 +116,7 @@ fn every_engine_stops_at_the_memory_limit_before_its_solver_grows_past_it() {
             ..Limits::default()
         };
         match engine.run(&pigeonhole(), &lim) {
-            Outcome::Unknown(why) => assert_eq!(why, MEMORY_LIMIT, "{}", engine.as_str()),
+            Outcome::Unknown { why, .. } => assert_eq!(why, MEMORY_LIMIT, "{}", engine.as_str()),
             other => panic!("{}: expected unknown, got {other:?}", engine.as_str()),
         }
     }

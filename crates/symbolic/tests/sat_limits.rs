@@ -46,7 +46,7 @@ const ENGINES: [Engine; 3] = [Engine::Bmc, Engine::Kind, Engine::Ic3];
 
 fn reason(out: Outcome, engine: Engine) -> String {
     match out {
-        Outcome::Unknown(why) => why,
+        Outcome::Unknown { why, .. } => why,
         other => panic!("{}: expected unknown, got {other:?}", engine.as_str()),
     }
 }

@@ -39,7 +39,7 @@ pub fn race(g: &Aig, lim: &Limits) -> (Outcome, &'static str) {
             });
         }
         drop(tx);
-        let mut last = (Outcome::Unknown("no engine answered".into()), "ic3");
+        let mut last = (Outcome::unknown("no engine answered"), "ic3");
         for (o, e) in rx.iter() {
             let def = matches!(o, Outcome::Reached(_) | Outcome::Proved(_));
             last = (o, e);

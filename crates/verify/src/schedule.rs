@@ -43,14 +43,40 @@ pub(crate) fn settled(s: &SymResult) -> bool {
     s.result.verdict.is_definitive() || s.result.verdict == Verdict::Bounded
 }
 
+/// What the attempts on one property cleared and cost, whether or not they decided it.
+#[derive(Clone, Copy, Debug, Default)]
+pub(crate) struct Tried {
+    /// The deepest depth an attempt cleared: no trace of at most this many ticks violates
+    /// the property (or reaches its target).
+    pub depth: u64,
+    /// The time of all attempts on it.
+    pub time: Duration,
+}
+
+impl Tried {
+    /// Count attempt `s` in, and give `s` the statistics of all attempts so far when it is
+    /// `unknown` (so an undecided row shows the deepest depth any pass cleared).
+    fn add(&mut self, s: &mut SymResult) {
+        self.time += s.time;
+        if s.result.verdict == Verdict::Unknown {
+            self.depth = self.depth.max(s.result.depth);
+            s.result.depth = self.depth;
+            s.time = self.time;
+        }
+    }
+}
+
 /// Run `w.engine` over the properties in `order`, pass after pass; `found(i, result)` gets
-/// every settled result and, in the last pass, every other one (its budget ran out).
+/// every settled result and, in the last pass, every other one (its budget ran out), an
+/// `unknown` with the deepest depth and the time of all attempts on it. Returns those
+/// statistics per property, for the rows the run's end leaves unreported.
 pub(crate) fn run(
     w: &Work,
     order: &[usize],
     events: &(dyn Fn(Event) + Sync),
     found: &mut dyn FnMut(usize, SymResult),
-) {
+) -> Vec<Tried> {
+    let mut tried = vec![Tried::default(); w.flags.len()];
     let pt = w.property_timeout;
     let mut budgets: Vec<Option<Duration>> = FIRST_PASSES
         .iter()
@@ -70,7 +96,7 @@ pub(crate) fn run(
             let now = Instant::now();
             if w.stop.load(Ordering::Relaxed) || w.deadline.is_some_and(|d| now >= d) {
                 events(Event::Idle { engine: name });
-                return;
+                return tried;
             }
             // The last pass: an equal share of the time left for each property still open
             // in this pass (a property that finishes early leaves its time to the others).
@@ -103,6 +129,7 @@ pub(crate) fn run(
                 stop: Some(Arc::clone(&w.flags[i])),
             };
             let mut s = decide(w.program, w.blasted, pi, kind, w.engine, &lim, w.reductions);
+            tried[i].add(&mut s);
             if settled(&s) {
                 found(i, s);
             } else if last {
@@ -124,4 +151,50 @@ pub(crate) fn run(
         }
     }
     events(Event::Idle { engine: name });
+    tried
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use statecheck_ir::verdict::PropResult;
+
+    fn attempt(verdict: Verdict, depth: u64, secs: u64) -> SymResult {
+        SymResult {
+            result: PropResult {
+                verdict,
+                depth,
+                ..PropResult::unknown("p", PropKind::Invariant)
+            },
+            invariant: None,
+            time: Duration::from_secs(secs),
+            reason: None,
+        }
+    }
+
+    #[test]
+    fn an_unknown_row_shows_the_deepest_pass_and_the_time_of_all() {
+        let mut t = Tried::default();
+        // A 1 s pass cleared 7 ticks; a longer one, restarted, was stopped at 5.
+        let mut first = attempt(Verdict::Unknown, 7, 1);
+        t.add(&mut first);
+        assert_eq!(
+            (first.result.depth, first.time),
+            (7, Duration::from_secs(1))
+        );
+        let mut second = attempt(Verdict::Unknown, 5, 10);
+        t.add(&mut second);
+        assert_eq!(
+            (second.result.depth, second.time),
+            (7, Duration::from_secs(11))
+        );
+        // A verdict keeps its own depth and time (a counterexample's length is not a bound).
+        let mut third = attempt(Verdict::Violated, 3, 2);
+        t.add(&mut third);
+        assert_eq!(
+            (third.result.depth, third.time),
+            (3, Duration::from_secs(2))
+        );
+        assert_eq!((t.depth, t.time), (7, Duration::from_secs(13)));
+    }
 }

@@ -105,6 +105,8 @@ pub(crate) fn run_engine(
     let families = Families::raising(p, opts.check.symmetry.as_ref(), &rows, &flags);
     let reductions = Reductions::new(bl.props.len());
     let mut got: Vec<Option<(PropResult, Meta, _)>> = vec![None; n];
+    // What the attempts on each property cleared, for the rows the run's end leaves open.
+    let mut tried = Vec::new();
     // Dropped when the engine is done, which wakes the watcher at once.
     let (finished, finished_rx) = std::sync::mpsc::channel::<()>();
     std::thread::scope(|s| {
@@ -136,7 +138,7 @@ pub(crate) fn run_engine(
             reductions: &reductions,
         };
         let order: Vec<usize> = (0..n).collect();
-        schedule::run(&work, &order, events, &mut |i, r| {
+        tried = schedule::run(&work, &order, events, &mut |i, r| {
             // An attempt cut short by the end of the run is not a verdict.
             if stop.load(Ordering::Relaxed) && !schedule::settled(&r) {
                 return;
@@ -168,10 +170,14 @@ pub(crate) fn run_engine(
     for (i, g) in got.into_iter().enumerate() {
         let (r, m, inv) = g.unwrap_or_else(|| {
             let (pi, kind) = idx[i];
-            let r = PropResult::unknown(&bl.props[pi].name, kind);
+            let t: schedule::Tried = tried.get(i).copied().unwrap_or_default();
+            let r = PropResult {
+                depth: t.depth,
+                ..PropResult::unknown(&bl.props[pi].name, kind)
+            };
             let m = Meta {
                 engine: engine.as_str(),
-                time_s: Some(0.0),
+                time_s: Some(t.time.as_secs_f64()),
                 reason: Some(early_end_reason(opts, deadline)),
                 decided_at_s: None,
                 symmetry_of: None,

@@ -59,7 +59,9 @@ fn reduction_keeps_every_verdict() {
                 (Outcome::Reached(t), Verdict::Violated | Verdict::Reachable) => {
                     assert_eq!(t.inputs.len() as u64, r.depth, "{at}: not shortest");
                 }
-                (Outcome::Unknown(w), Verdict::Violated | Verdict::Reachable) if w == SPURIOUS => {
+                (Outcome::Unknown { why: w, .. }, Verdict::Violated | Verdict::Reachable)
+                    if w == SPURIOUS =>
+                {
                     spurious += 1;
                 }
                 (o, v) => panic!("{at}: explicit says {v:?}, reduced IC3 says {o:?}"),

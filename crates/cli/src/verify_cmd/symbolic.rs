@@ -231,7 +231,7 @@ pub fn run_aiger(a: &AigerRun) -> Result<u8> {
                 ("proved", 0, None)
             }
             Outcome::Bounded(k) => ("bounded", *k, None),
-            Outcome::Unknown(why) => ("unknown", 0, Some(why.clone())),
+            Outcome::Unknown { why, cleared } => ("unknown", *cleared, Some(why.clone())),
         };
         code = match verdict {
             "violated" => 1,

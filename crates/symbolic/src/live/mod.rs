@@ -157,7 +157,7 @@ pub fn check_justice(j: &Justice, method: Method, limits: &Limits) -> LiveOutcom
             match run_reduced(engine, &l.aig, 0, &Reductions::new(1), limits) {
                 Outcome::Proved(_) => LiveOutcome::Proved,
                 Outcome::Bounded(k) => LiveOutcome::Bounded(k),
-                Outcome::Unknown(why) => LiveOutcome::Unknown(why),
+                Outcome::Unknown { why, .. } => LiveOutcome::Unknown(why),
                 Outcome::Reached(mut trace) => {
                     // The last frame only closes the loop (its state is the saved one).
                     trace.inputs.pop();
@@ -205,7 +205,7 @@ fn klive_from(j: &Justice, k: &mut u32, outer: &Limits, slice: &Limits) -> Optio
             Outcome::Proved(_) => return Some(LiveOutcome::Proved),
             Outcome::Reached(_) => *k = (2 * *k).max(1),
             Outcome::Bounded(d) => return Some(LiveOutcome::Bounded(d)),
-            Outcome::Unknown(why) => {
+            Outcome::Unknown { why, .. } => {
                 return match outer.expired() {
                     Some(w) => Some(LiveOutcome::Unknown(w)),
                     None if slice.expired().is_some() => None,

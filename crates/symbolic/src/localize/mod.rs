@@ -147,10 +147,7 @@ fn run(
                         }
                         // Cannot happen (the model is a trace of the concrete circuit);
                         // never report a trace that does not replay.
-                        return (
-                            Outcome::Unknown("a counterexample did not replay".into()),
-                            st,
-                        );
+                        return (Outcome::unknown("a counterexample did not replay"), st);
                     }
                     Check::Refuted(core) => {
                         st.refinements += 1;
@@ -166,9 +163,7 @@ fn run(
                             let wider = abstraction::grow(aig, &keep);
                             if wider == keep {
                                 return (
-                                    Outcome::Unknown(
-                                        "the abstraction cannot be refined further".into(),
-                                    ),
+                                    Outcome::unknown("the abstraction cannot be refined further"),
                                     st,
                                 );
                             }
@@ -176,11 +171,11 @@ fn run(
                         }
                     }
                     Check::Stopped(why) => {
-                        return stopped(progress, keep, st, Outcome::Unknown(why))
+                        return stopped(progress, keep, st, Outcome::unknown(why))
                     }
                 }
             }
-            Outcome::Unknown(_) => return stopped(progress, keep, st, out),
+            Outcome::Unknown { .. } => return stopped(progress, keep, st, out),
             Outcome::Proved(None) => return (out, st),
             Outcome::Bounded(_) => return (out, st),
         }
@@ -225,7 +220,7 @@ fn prove_reduced(
                 progress.frames = Ic3Frames::default();
             }
             Err(_) => {
-                return Outcome::Unknown(
+                return Outcome::unknown(
                     limits
                         .run_expired()
                         .unwrap_or_else(|| "the abstraction's reduction stopped".into()),
@@ -241,7 +236,7 @@ fn prove_reduced(
     crate::sat::with_limits(limits, || {
         let out = crate::ic3::ic3_resume(&red.aig, limits, &Vec::new(), &mut progress.frames);
         match red.lift(&abs.aig, out) {
-            Outcome::Unknown(why) if why == SPURIOUS => crate::ic3::ic3(&abs.aig, limits),
+            Outcome::Unknown { why, .. } if why == SPURIOUS => crate::ic3::ic3(&abs.aig, limits),
             out => out,
         }
     })

@@ -156,7 +156,7 @@ impl Reduction {
                 if replays(original, &lifted) {
                     Outcome::Reached(lifted)
                 } else {
-                    Outcome::Unknown(SPURIOUS.into())
+                    Outcome::unknown(SPURIOUS)
                 }
             }
             Outcome::Proved(Some(inv)) => {
