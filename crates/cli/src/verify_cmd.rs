@@ -216,7 +216,13 @@ pub fn run(a: VerifyArgs) -> Result<u8> {
             property_timeout,
             cancel: Some(cancel),
         };
-        return matrix::run(&loaded, &base, &vopts, a.json);
+        let how = matrix::Matrix {
+            opts: &vopts,
+            symmetry: a.symmetry && !a.no_symmetry,
+            warn: !a.quiet,
+            json: a.json,
+        };
+        return matrix::run(&loaded, &base, &how);
     }
     let program = loaded.lower(sys)?;
     crate::output::table::show(
@@ -252,6 +258,12 @@ pub fn run(a: VerifyArgs) -> Result<u8> {
             bail!(
                 "--workers distributes the explicit engine; it cannot be combined with --engine {}",
                 engine.as_str()
+            );
+        }
+        if opts.symmetry.is_some() && !a.quiet {
+            // Said, not silently dropped: the counts are then the full search's.
+            eprintln!(
+                "warning: --workers explores without symmetry reduction: its state counts are those of the full search (docs/distributed.md)"
             );
         }
         return dist::run(&a, &loaded, &program, opts);

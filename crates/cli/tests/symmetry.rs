@@ -402,3 +402,78 @@ fn explicit_symmetry_is_off_when_only_some_members_of_a_family_are_checked() {
     );
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// `--all-configs --symmetry`: each configuration stores its own orbits (counts derived by
+/// hand in `tests/verify/symmetry_configs.sc`), with the verdicts of the full search.
+#[test]
+fn every_configuration_of_a_matrix_is_reduced_by_its_own_symmetry() {
+    let matrix = |extra: &[&str]| -> Vec<(String, u64, Vec<(String, String, u64)>)> {
+        let mut args = vec![
+            "verify",
+            "tests/verify/symmetry_configs.sc",
+            "--all-configs",
+            "--engine",
+            "explicit",
+            "--json",
+            "--threads",
+            "1",
+        ];
+        args.extend(extra);
+        let out = statecheck(&args);
+        // `thirds` violates `below`: the matrix exits 1.
+        assert_eq!(out.status.code(), Some(1), "{extra:?}");
+        let v: serde_json::Value = serde_json::from_slice(&out.stdout).expect("json");
+        v["configurations"]
+            .as_array()
+            .expect("configurations")
+            .iter()
+            .map(|c| {
+                (
+                    c["configuration"].as_str().unwrap_or("").to_string(),
+                    c["states"].as_u64().unwrap_or(0),
+                    verdicts(c),
+                )
+            })
+            .collect()
+    };
+    let full = matrix(&[]);
+    let red = matrix(&["--symmetry"]);
+    let counts = |m: &[(String, u64, Vec<(String, String, u64)>)]| -> Vec<(String, u64)> {
+        m.iter().map(|(c, s, _)| (c.clone(), *s)).collect()
+    };
+    assert_eq!(
+        counts(&full),
+        [("thirds".to_string(), 28), ("halves".to_string(), 9)]
+    );
+    assert_eq!(
+        counts(&red),
+        [("thirds".to_string(), 11), ("halves".to_string(), 5)]
+    );
+    for ((_, _, f), (c, _, r)) in full.iter().zip(&red) {
+        assert_eq!(f, r, "{c}");
+    }
+    let below: Vec<&str> = red[0]
+        .2
+        .iter()
+        .map(|(_, v, _)| v.as_str())
+        .take(3)
+        .collect();
+    assert_eq!(below, ["violated"; 3]);
+    assert!(
+        red[1].2.iter().all(|(_, v, _)| v == "proved"),
+        "{:?}",
+        red[1]
+    );
+}
+
+/// The distributed search does not reduce: `--symmetry` with `--workers` says so and stores
+/// the full search's 28 states (derived in `tests/verify/symmetry.sc`).
+#[test]
+fn the_distributed_search_warns_that_it_does_not_reduce() {
+    let (v, stderr) = verify("Counters", &["--symmetry", "--workers", "1"]);
+    assert!(
+        stderr.contains("--workers explores without symmetry reduction"),
+        "{stderr}"
+    );
+    assert_eq!(v["stats"]["states"], 28, "{v}");
+}

@@ -27,14 +27,23 @@ struct Cell {
     tick: Option<(u64, String)>,
 }
 
-/// Verify `base` in each configuration with `opts`; print the matrix; the exit code is the
-/// worst over all configurations (1 violated, else 3 unknown, else 0).
-pub fn run(
-    loaded: &Loaded,
-    base: &str,
-    opts: &statecheck_verify::Options,
-    json: bool,
-) -> Result<u8> {
+/// How the matrix is verified and printed.
+pub struct Matrix<'a> {
+    /// The engine, limits and properties of every configuration's run.
+    pub opts: &'a statecheck_verify::Options,
+    /// `--symmetry`: each configuration's interchangeable arrays are detected in its own
+    /// program (a configuration may break a symmetry another keeps).
+    pub symmetry: bool,
+    /// Print the symmetry warnings (W0316–W0318) of each configuration.
+    pub warn: bool,
+    /// One JSON object instead of the table.
+    pub json: bool,
+}
+
+/// Verify `base` in each configuration; print the matrix; the exit code is the worst over
+/// all configurations (1 violated, else 3 unknown, else 0).
+pub fn run(loaded: &Loaded, base: &str, how: &Matrix) -> Result<u8> {
+    let json = how.json;
     let configs = loaded.configurations(base);
     if configs.is_empty() {
         bail!("system `{base}` declares no configurations: --all-configs needs some");
@@ -45,8 +54,16 @@ pub fn run(
         let name = format!("{base}{CONFIG_SEP}{config}");
         let sys = loaded.system(Some(&name))?;
         let program = loaded.lower(sys)?;
+        let mut opts = how.opts.clone();
+        if how.symmetry {
+            let found = statecheck_ir::symmetry::detect(sys, &program);
+            if how.warn {
+                crate::diag::eprint_sources(&loaded.sources, &found.diagnostics);
+            }
+            opts.check.symmetry = Some(std::sync::Arc::new(found.symmetry));
+        }
         let start = Instant::now();
-        let run = match statecheck_verify::verify(&program, opts, &|_| {}) {
+        let run = match statecheck_verify::verify(&program, &opts, &|_| {}) {
             Ok(r) => r,
             Err(e) => bail!("configuration `{config}`: {e}"),
         };
