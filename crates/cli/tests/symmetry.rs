@@ -403,11 +403,14 @@ fn explicit_symmetry_is_off_when_only_some_members_of_a_family_are_checked() {
     let _ = std::fs::remove_dir_all(&dir);
 }
 
+/// One configuration of a matrix: its name, states stored and (property, verdict, depth) rows.
+type ConfigRow = (String, u64, Vec<(String, String, u64)>);
+
 /// `--all-configs --symmetry`: each configuration stores its own orbits (counts derived by
 /// hand in `tests/verify/symmetry_configs.sc`), with the verdicts of the full search.
 #[test]
 fn every_configuration_of_a_matrix_is_reduced_by_its_own_symmetry() {
-    let matrix = |extra: &[&str]| -> Vec<(String, u64, Vec<(String, String, u64)>)> {
+    let matrix = |extra: &[&str]| -> Vec<ConfigRow> {
         let mut args = vec![
             "verify",
             "tests/verify/symmetry_configs.sc",
@@ -438,7 +441,7 @@ fn every_configuration_of_a_matrix_is_reduced_by_its_own_symmetry() {
     };
     let full = matrix(&[]);
     let red = matrix(&["--symmetry"]);
-    let counts = |m: &[(String, u64, Vec<(String, String, u64)>)]| -> Vec<(String, u64)> {
+    let counts = |m: &[ConfigRow]| -> Vec<(String, u64)> {
         m.iter().map(|(c, s, _)| (c.clone(), *s)).collect()
     };
     assert_eq!(
