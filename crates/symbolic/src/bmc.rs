@@ -61,12 +61,14 @@ pub enum ManyEnd {
 /// output `j` the moment it is found. One unrolling serves all outputs: the run costs the
 /// deepest trace's unrolling once, not once per output. Each query obeys `limits` and, while
 /// it runs, `stop_of(j)` as well (so a long query on an output another engine has just
-/// decided is abandoned).
+/// decided is abandoned). `cleared(j, k)` is told each time no trace of at most `k` frames
+/// reaches output `j`.
 pub fn bmc_many(
     aig: &Aig,
     limits: &Limits,
     open: &dyn Fn(usize) -> bool,
     stop_of: &dyn Fn(usize) -> Option<std::sync::Arc<std::sync::atomic::AtomicBool>>,
+    cleared: &dyn Fn(usize, usize),
     found: &mut dyn FnMut(usize, Trace),
 ) -> ManyEnd {
     let mut done = vec![false; aig.bad.len()];
@@ -103,7 +105,10 @@ pub fn bmc_many(
                 }
                 // No trace reaches output j in frame k: a fact of every trace, which also
                 // helps the queries of the other outputs.
-                Some(false) => s.add(&[!b]),
+                Some(false) => {
+                    s.add(&[!b]);
+                    cleared(j, k + 1);
+                }
                 // Interrupted by the run's limits, or by output j's own flag (decided
                 // elsewhere; or the solver failed): j is given up, the others go on.
                 None => {
@@ -149,14 +154,22 @@ mod tests {
             ..Limits::default()
         };
         let mut got = Vec::new();
-        let end = bmc_many(&g, &lim, &|_| true, &|_| None, &mut |j, t| {
-            got.push((j, t.inputs.len()))
-        });
+        let deepest = std::sync::Mutex::new(vec![0; 3]);
+        let end = bmc_many(
+            &g,
+            &lim,
+            &|_| true,
+            &|_| None,
+            &|j, k| deepest.lock().expect("not poisoned")[j] = k,
+            &mut |j, t| got.push((j, t.inputs.len())),
+        );
         // By hand: latch 2 holds in frame 2 (a 3-frame trace), latch 5 in frame 5 (6 frames),
         // found in depth order; the third output is never reached, so the search ends at the
         // depth bound.
         assert_eq!(got, vec![(1, 3), (0, 6)]);
         assert_eq!(end, ManyEnd::Bounded(10));
+        // Cleared up to the frame before each trace's last; the unreachable one to the bound.
+        assert_eq!(*deepest.lock().expect("not poisoned"), vec![5, 2, 10]);
     }
 
     #[test]
@@ -169,6 +182,7 @@ mod tests {
             &Limits::default(),
             &|j| j == 1,
             &|_| None,
+            &|_, _| {},
             &mut |j, t| got.push((j, t.inputs.len())),
         );
         assert_eq!(got, vec![(1, 3)]);

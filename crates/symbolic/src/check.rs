@@ -476,9 +476,10 @@ pub fn decide(
 /// built-ins are skipped, each has its own constraint): one unrolling of the shared problem
 /// ([`crate::bmc::bmc_many`]), so the witnesses of all of them cost the deepest one's
 /// unrolling. `open(n)` says whether `props[n]` is still wanted (asked before every query),
-/// `stop_of(n)` gives the flag that abandons a running query on it, and `found(n, result)`
-/// gets each shortest counterexample or witness as it is found.
-#[allow(clippy::too_many_arguments)] // reason: the program, its circuit, the selection, limits and three callbacks are all needed; a struct for one call site would only rename them
+/// `stop_of(n)` gives the flag that abandons a running query on it, `cleared(n, k)` is told
+/// each time no trace of at most `k` ticks decides it, and `found(n, result)` gets each
+/// shortest counterexample or witness as it is found.
+#[allow(clippy::too_many_arguments)] // reason: the program, its circuit, the selection, limits and four callbacks are all needed; a struct for one call site would only rename them
 pub fn bmc_shared(
     p: &Program,
     bl: &Blasted,
@@ -487,6 +488,7 @@ pub fn bmc_shared(
     limits: &Limits,
     open: &dyn Fn(usize) -> bool,
     stop_of: &dyn Fn(usize) -> Option<Arc<std::sync::atomic::AtomicBool>>,
+    cleared: &dyn Fn(usize, usize),
     found: &mut dyn FnMut(usize, SymResult),
 ) -> crate::bmc::ManyEnd {
     let start = Instant::now();
@@ -510,6 +512,7 @@ pub fn bmc_shared(
             limits,
             &|j| open(which[j]),
             &|j| stop_of(which[j]),
+            &|j, k| cleared(which[j], k),
             &mut |j, t| {
                 let n = which[j];
                 let (prop, kind) = props[n];

@@ -24,13 +24,13 @@ use crate::single::{early_end_reason, meta_of};
 use crate::symmetry::Families;
 use crate::{Error, Event, Meta, Options, Run, REASON_PROPERTY_LIMIT};
 use statecheck_explicit::{Progress, Report, Stats};
-use statecheck_ir::verdict::{PropKind, PropResult};
+use statecheck_ir::verdict::{PropKind, PropResult, Verdict};
 use statecheck_ir::Program;
 use statecheck_symbolic::aig::Aig;
 use statecheck_symbolic::check::{bmc_shared, problems, Engine, Reductions, SymResult};
 use statecheck_symbolic::engine::Invariant;
 use statecheck_symbolic::engine::Limits;
-use std::sync::atomic::{AtomicBool, Ordering};
+use std::sync::atomic::{AtomicBool, AtomicU64, Ordering};
 use std::sync::{mpsc, Arc};
 use std::time::{Duration, Instant};
 
@@ -115,6 +115,11 @@ pub(crate) fn run_auto(
     let mut got: Vec<Option<Decided>> = vec![None; n];
     let mut fallback: Vec<Option<(PropResult, Meta)>> = vec![None; n];
     let mut explicit_stats = None;
+    // The layer the explicit engine was expanding: no property has a counterexample (or
+    // witness) of at most that many ticks, whatever the engines leave undecided.
+    let mut explicit_cleared = 0u64;
+    // Per row: the depth BMC's shared unrolling cleared it to.
+    let bmc_cleared: Vec<AtomicU64> = (0..n).map(|_| AtomicU64::new(0)).collect();
     std::thread::scope(|s| {
         for engine in SYMBOLIC_RACE {
             let tx = tx.clone();
@@ -137,6 +142,7 @@ pub(crate) fn run_auto(
                 reductions: &reductions,
             };
             let explicit_done = &explicit_done;
+            let bmc_cleared = &bmc_cleared;
             let stop = &stop;
             let idx = &idx;
             s.spawn(move || {
@@ -161,7 +167,7 @@ pub(crate) fn run_auto(
                     // All own properties in one unrolling (their shortest traces as it
                     // reaches them); what it leaves (built-ins, or every property at a depth
                     // bound) goes through the schedule below.
-                    bmc_all(&work, events, &mut send);
+                    bmc_all(&work, events, bmc_cleared, &mut send);
                 }
                 schedule::run(&work, &order, events, &mut send);
                 let _ = tx.send(Msg::Done);
@@ -188,7 +194,10 @@ pub(crate) fn run_auto(
                 Err(mpsc::RecvTimeoutError::Disconnected) => break,
             };
             match msg {
-                Msg::Progress(pr) => events(Event::Progress(&pr)),
+                Msg::Progress(pr) => {
+                    explicit_cleared = explicit_cleared.max(pr.depth);
+                    events(Event::Progress(&pr));
+                }
                 Msg::Explicit(r, t) => {
                     explicit_over = true;
                     if let Ok(rep) = *r {
@@ -246,7 +255,7 @@ pub(crate) fn run_auto(
             if g.is_some() {
                 continue;
             }
-            let (r, mut m) = fallback[i].take().unwrap_or_else(|| {
+            let (r, m) = fallback[i].take().unwrap_or_else(|| {
                 (
                     PropResult::unknown(&bl.props[idx[i].0].name, idx[i].1),
                     Meta {
@@ -258,9 +267,27 @@ pub(crate) fn run_auto(
                     },
                 )
             });
+            let (mut r, mut m) = (r, m);
             // The reason is the run's end, unless this property's own budget ran out.
             if !r.verdict.is_definitive() && m.reason.as_deref() != Some(REASON_PROPERTY_LIMIT) {
                 m.reason = Some(why.clone());
+            }
+            // An unknown row shows the deepest depth any engine cleared, and which one.
+            if r.verdict == Verdict::Unknown {
+                let by_bmc = bmc_cleared[i].load(Ordering::Relaxed);
+                for (depth, engine) in [(by_bmc, "bmc"), (explicit_cleared, "explicit")] {
+                    if depth > r.depth {
+                        r.depth = depth;
+                        // That engine worked on it for the whole run, undecided.
+                        m = Meta {
+                            engine,
+                            time_s: Some(started.elapsed().as_secs_f64()),
+                            reason: m.reason.take(),
+                            decided_at_s: None,
+                            symmetry_of: m.symmetry_of.take(),
+                        };
+                    }
+                }
             }
             events(Event::Decided {
                 index: i,
@@ -299,8 +326,14 @@ pub(crate) fn run_auto(
 }
 
 /// BMC over every property of `w` in one unrolling of the shared problem (built-ins, which
-/// have their own constraints, are left to the schedule).
-fn bmc_all(w: &Work, events: &(dyn Fn(Event) + Sync), send: &mut dyn FnMut(usize, SymResult)) {
+/// have their own constraints, are left to the schedule); `cleared[i]` follows the depth up to
+/// which no trace decides property `i`.
+fn bmc_all(
+    w: &Work,
+    events: &(dyn Fn(Event) + Sync),
+    cleared: &[AtomicU64],
+    send: &mut dyn FnMut(usize, SymResult),
+) {
     let Some(first) = (0..w.idx.len()).find(|&i| !w.flags[i].load(Ordering::Relaxed)) else {
         return;
     };
@@ -324,6 +357,9 @@ fn bmc_all(w: &Work, events: &(dyn Fn(Event) + Sync), send: &mut dyn FnMut(usize
         &lim,
         &|i| !w.flags[i].load(Ordering::Relaxed) && !w.stop.load(Ordering::Relaxed),
         &|i| Some(Arc::clone(&w.flags[i])),
+        &|i, k| {
+            cleared[i].fetch_max(k as u64, Ordering::Relaxed);
+        },
         send,
     );
 }
