@@ -20,23 +20,21 @@ fn statecheck(args: &[&str]) -> Output {
         .expect("statecheck runs")
 }
 
-fn verify(system: &str, extra: &[&str]) -> (serde_json::Value, String) {
-    let mut args = vec![
-        "verify",
-        "tests/verify/symmetry.sc",
-        "--system",
-        system,
-        "--engine",
-        "explicit",
-        "--json",
-        "--threads",
-        "1",
-    ];
+/// `verify TARGET… --engine explicit --json --threads 1 EXTRA…`, which must exit 1 (every
+/// model here violates a property): its JSON and its standard error.
+fn explicit(target: &[&str], extra: &[&str]) -> (serde_json::Value, String) {
+    let mut args = vec!["verify"];
+    args.extend(target);
+    args.extend(["--engine", "explicit", "--json", "--threads", "1"]);
     args.extend(extra);
     let out = statecheck(&args);
-    assert_eq!(out.status.code(), Some(1), "{system} {extra:?}");
+    assert_eq!(out.status.code(), Some(1), "{target:?} {extra:?}");
     let v = serde_json::from_slice(&out.stdout).expect("json");
     (v, String::from_utf8_lossy(&out.stderr).into_owned())
+}
+
+fn verify(system: &str, extra: &[&str]) -> (serde_json::Value, String) {
+    explicit(&["tests/verify/symmetry.sc", "--system", system], extra)
 }
 
 #[test]
@@ -411,21 +409,11 @@ type ConfigRow = (String, u64, Vec<(String, String, u64)>);
 #[test]
 fn every_configuration_of_a_matrix_is_reduced_by_its_own_symmetry() {
     let matrix = |extra: &[&str]| -> Vec<ConfigRow> {
-        let mut args = vec![
-            "verify",
-            "tests/verify/symmetry_configs.sc",
-            "--all-configs",
-            "--engine",
-            "explicit",
-            "--json",
-            "--threads",
-            "1",
-        ];
-        args.extend(extra);
-        let out = statecheck(&args);
         // `thirds` violates `below`: the matrix exits 1.
-        assert_eq!(out.status.code(), Some(1), "{extra:?}");
-        let v: serde_json::Value = serde_json::from_slice(&out.stdout).expect("json");
+        let (v, _) = explicit(
+            &["tests/verify/symmetry_configs.sc", "--all-configs"],
+            extra,
+        );
         v["configurations"]
             .as_array()
             .expect("configurations")
