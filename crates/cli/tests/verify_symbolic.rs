@@ -71,9 +71,14 @@ fn every_engine_gives_the_hand_derived_verdicts() {
             assert_eq!(r["engine"], engine);
         }
         let n = result(&v, "never_above9");
-        let want = if engine == "bmc" { "bounded" } else { "proved" };
-        if engine != "bmc" {
-            assert_eq!(n["verdict"], want, "{engine}");
+        if engine == "bmc" {
+            // BMC never proves: it clears the default 100 ticks.
+            assert_eq!(
+                (&n["verdict"], &n["depth"]),
+                (&"bounded".into(), &100.into())
+            );
+        } else {
+            assert_eq!(n["verdict"], "proved", "{engine}");
         }
     }
     let (code, v) = verify(&[&m, "--system", "Reaching", "--engine", "ic3"]);
@@ -98,6 +103,41 @@ fn bmc_depth_bound_gives_bounded() {
         "below5",
     ]);
     assert_eq!(result(&v, "below5")["verdict"], "bounded");
+    assert_eq!(result(&v, "below5")["depth"], 4);
+}
+
+/// BMC alone unrolls the properties' shared circuit once: each counterexample or witness at
+/// its own shortest depth, every property still open bounded at `--depth`, and the built-ins
+/// (their own constraints) bounded there too. By hand (`counter.sc`): `below5` is violated
+/// at 6 ticks, `reach9` reached at 10; with `--depth 8` `never_above9` and `reach_neg` are
+/// bounded at 8, and so is `reach9` (first at 10 ticks).
+#[test]
+fn bmc_alone_decides_every_property_in_one_unrolling() {
+    let m = model("counter.sc");
+    let (code, v) = verify(&[
+        &m, "--system", "Counting", "--engine", "bmc", "--depth", "8",
+    ]);
+    assert_eq!(code, 1);
+    let row = |v: &Value, p: &str| {
+        let r = result(v, p);
+        (
+            r["verdict"].as_str().unwrap_or("").to_string(),
+            r["depth"].as_u64(),
+        )
+    };
+    assert_eq!(row(&v, "below5"), ("violated".into(), Some(6)));
+    assert_eq!(row(&v, "never_above9"), ("bounded".into(), Some(8)));
+    assert_eq!(row(&v, "no_range_overflow"), ("bounded".into(), Some(8)));
+    let (_, v) = verify(&[
+        &m, "--system", "Reaching", "--engine", "bmc", "--depth", "8",
+    ]);
+    assert_eq!(row(&v, "reach9"), ("bounded".into(), Some(8)));
+    assert_eq!(row(&v, "reach_neg"), ("bounded".into(), Some(8)));
+    let (_, v) = verify(&[
+        &m, "--system", "Reaching", "--engine", "bmc", "--depth", "12",
+    ]);
+    assert_eq!(row(&v, "reach9"), ("reachable".into(), Some(10)));
+    assert_eq!(row(&v, "reach_neg"), ("bounded".into(), Some(12)));
 }
 
 #[test]

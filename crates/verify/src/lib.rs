@@ -13,6 +13,7 @@ mod portfolio;
 mod priority;
 mod quick;
 mod schedule;
+mod shared_bmc;
 mod single;
 mod symmetry;
 mod temporal;

@@ -27,9 +27,8 @@ use statecheck_explicit::{Progress, Report, Stats};
 use statecheck_ir::verdict::{PropKind, PropResult, Verdict};
 use statecheck_ir::Program;
 use statecheck_symbolic::aig::Aig;
-use statecheck_symbolic::check::{bmc_shared, problems, Engine, Reductions, SymResult};
+use statecheck_symbolic::check::{problems, Engine, Reductions, SymResult};
 use statecheck_symbolic::engine::Invariant;
-use statecheck_symbolic::engine::Limits;
 use std::sync::atomic::{AtomicBool, AtomicU64, Ordering};
 use std::sync::{mpsc, Arc};
 use std::time::{Duration, Instant};
@@ -167,7 +166,7 @@ pub(crate) fn run_auto(
                     // All own properties in one unrolling (their shortest traces as it
                     // reaches them); what it leaves (built-ins, or every property at a depth
                     // bound) goes through the schedule below.
-                    bmc_all(&work, events, bmc_cleared, &mut send);
+                    crate::shared_bmc::bmc_all(&work, bmc_cleared, events, &mut send);
                 }
                 schedule::run(&work, &order, events, &mut send);
                 let _ = tx.send(Msg::Done);
@@ -323,43 +322,4 @@ pub(crate) fn run_auto(
         meta,
         invariants,
     })
-}
-
-/// BMC over every property of `w` in one unrolling of the shared problem (built-ins, which
-/// have their own constraints, are left to the schedule); `cleared[i]` follows the depth up to
-/// which no trace decides property `i`.
-fn bmc_all(
-    w: &Work,
-    events: &(dyn Fn(Event) + Sync),
-    cleared: &[AtomicU64],
-    send: &mut dyn FnMut(usize, SymResult),
-) {
-    let Some(first) = (0..w.idx.len()).find(|&i| !w.flags[i].load(Ordering::Relaxed)) else {
-        return;
-    };
-    events(Event::Working {
-        engine: Engine::Bmc.as_str(),
-        index: first,
-        budget: None,
-    });
-    let lim = Limits {
-        deadline: w.deadline,
-        attempt_deadline: None,
-        max_depth: w.max_depth,
-        stop: Some(Arc::new(AtomicBool::new(false))),
-    };
-    // The run's end raises every property's flag, so the open test below also ends the search.
-    let _ = bmc_shared(
-        w.program,
-        w.blasted,
-        w.reductions,
-        w.idx,
-        &lim,
-        &|i| !w.flags[i].load(Ordering::Relaxed) && !w.stop.load(Ordering::Relaxed),
-        &|i| Some(Arc::clone(&w.flags[i])),
-        &|i, k| {
-            cleared[i].fetch_max(k as u64, Ordering::Relaxed);
-        },
-        send,
-    );
 }

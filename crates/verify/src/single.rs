@@ -9,7 +9,7 @@ use statecheck_explicit::{Limit, Report, Stats};
 use statecheck_ir::verdict::{PropResult, Verdict};
 use statecheck_ir::Program;
 use statecheck_symbolic::check::{problems, Engine, Reductions, SymResult};
-use std::sync::atomic::{AtomicBool, Ordering};
+use std::sync::atomic::{AtomicBool, AtomicU64, Ordering};
 use std::sync::Arc;
 use std::time::Instant;
 
@@ -107,6 +107,9 @@ pub(crate) fn run_engine(
     let mut got: Vec<Option<(PropResult, Meta, _)>> = vec![None; n];
     // What the attempts on each property cleared, for the rows the run's end leaves open.
     let mut tried = Vec::new();
+    // BMC alone: the depth its shared unrolling cleared each property to.
+    let bmc_cleared: Vec<AtomicU64> = (0..n).map(|_| AtomicU64::new(0)).collect();
+    let mut bmc_time = std::time::Duration::ZERO;
     // Dropped when the engine is done, which wakes the watcher at once.
     let (finished, finished_rx) = std::sync::mpsc::channel::<()>();
     std::thread::scope(|s| {
@@ -138,7 +141,7 @@ pub(crate) fn run_engine(
             reductions: &reductions,
         };
         let order: Vec<usize> = (0..n).collect();
-        tried = schedule::run(&work, &order, events, &mut |i, r| {
+        let mut record = |i: usize, r: SymResult| {
             // An attempt cut short by the end of the run is not a verdict.
             if stop.load(Ordering::Relaxed) && !schedule::settled(&r) {
                 return;
@@ -161,7 +164,11 @@ pub(crate) fn run_engine(
                 }
             }
             got[i] = Some((r.result, m, r.invariant));
-        });
+        };
+        if engine == Engine::Bmc {
+            bmc_time = crate::shared_bmc::bmc_all(&work, &bmc_cleared, events, &mut record);
+        }
+        tried = schedule::run(&work, &order, events, &mut record);
         drop(finished);
     });
     let mut results = Vec::new();
@@ -170,9 +177,14 @@ pub(crate) fn run_engine(
     for (i, g) in got.into_iter().enumerate() {
         let (r, m, inv) = g.unwrap_or_else(|| {
             let (pi, kind) = idx[i];
-            let t: schedule::Tried = tried.get(i).copied().unwrap_or_default();
+            let mut t: schedule::Tried = tried.get(i).copied().unwrap_or_default();
+            let by_bmc = bmc_cleared[i].load(Ordering::Relaxed);
+            if by_bmc > 0 {
+                // The shared unrolling worked on it too.
+                t.time += bmc_time;
+            }
             let r = PropResult {
-                depth: t.depth,
+                depth: t.depth.max(by_bmc),
                 ..PropResult::unknown(&bl.props[pi].name, kind)
             };
             let m = Meta {
