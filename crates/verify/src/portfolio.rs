@@ -254,7 +254,7 @@ pub(crate) fn run_auto(
             if g.is_some() {
                 continue;
             }
-            let (r, m) = fallback[i].take().unwrap_or_else(|| {
+            let (mut r, mut m) = fallback[i].take().unwrap_or_else(|| {
                 (
                     PropResult::unknown(&bl.props[idx[i].0].name, idx[i].1),
                     Meta {
@@ -266,7 +266,6 @@ pub(crate) fn run_auto(
                     },
                 )
             });
-            let (mut r, mut m) = (r, m);
             // The reason is the run's end, unless this property's own budget ran out.
             if !r.verdict.is_definitive() && m.reason.as_deref() != Some(REASON_PROPERTY_LIMIT) {
                 m.reason = Some(why.clone());

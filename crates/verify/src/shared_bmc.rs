@@ -4,7 +4,7 @@
 
 use crate::schedule::Work;
 use crate::Event;
-use statecheck_ir::verdict::{PropResult, Verdict};
+use statecheck_ir::verdict::{PropKind, PropResult, Verdict};
 use statecheck_symbolic::bmc::ManyEnd;
 use statecheck_symbolic::check::{bmc_shared, Engine, SymResult};
 use statecheck_symbolic::engine::Limits;
@@ -26,10 +26,10 @@ pub(crate) fn bmc_all(
     let Some(first) = (0..w.idx.len()).find(|&i| !w.flags[i].load(Ordering::Relaxed)) else {
         return std::time::Duration::ZERO;
     };
-    // BMC works on every open property at once; the first is named last (a display shows
-    // the latest).
+    // BMC works on every open own property at once (the built-ins are not in the shared
+    // circuit); the first is named last (a display shows the latest).
     for i in (first..w.idx.len()).rev() {
-        if !w.flags[i].load(Ordering::Relaxed) {
+        if !w.flags[i].load(Ordering::Relaxed) && w.idx[i].1 != PropKind::Builtin {
             events(Event::Working {
                 engine: Engine::Bmc.as_str(),
                 index: i,
