@@ -115,6 +115,16 @@ pub struct VerifyArgs {
     /// Never collapse-compress the visited set (see --collapse).
     #[arg(long)]
     no_collapse: bool,
+    /// Bitstate hashing, as SPIN's supertrace: the explicit engine keeps a bit array of SIZE
+    /// (e.g. 4G) instead of its visited set, so a search of any length fits. A violation found
+    /// is real; a search that runs out of states proves nothing: the other safety verdicts are
+    /// `unknown`, with the expected number of omitted states (docs/verification.md, "Bitstate
+    /// hashing"). Temporal properties are checked without it.
+    #[arg(long, value_name = "SIZE", conflicts_with_all = ["collapse", "workers", "all_configs"])]
+    bitstate: Option<String>,
+    /// With --bitstate: bits set per state (SPIN's -k).
+    #[arg(long, value_name = "K", default_value_t = statecheck_explicit::bitstate::DEFAULT_HASHES, requires = "bitstate")]
+    bitstate_hashes: u32,
     /// How the explicit engine computes successors: `interpreter` (the IR's register code),
     /// `native` (the C step function compiled by the system's C compiler, cross-checked
     /// against the interpreter), or `auto` (native once a search runs longer than 0.3 s).
@@ -242,6 +252,9 @@ pub fn run(a: VerifyArgs) -> Result<u8> {
         bail!("--certificate needs --engine ic3 or cegar");
     }
     let mut opts = options(&a, max_memory, remaining(timeout, started));
+    if let Some(size) = &a.bitstate {
+        opts.bitstate = Some(bitstate(size, a.bitstate_hashes, max_memory)?);
+    }
     if a.symmetry && !a.no_symmetry {
         let found = statecheck_ir::symmetry::detect(sys, &program);
         if !a.quiet {
@@ -250,6 +263,17 @@ pub fn run(a: VerifyArgs) -> Result<u8> {
         opts.symmetry = Some(std::sync::Arc::new(found.symmetry));
     }
     let engine: statecheck_verify::Engine = a.engine.into();
+    if opts.bitstate.is_some()
+        && !matches!(
+            engine,
+            statecheck_verify::Engine::Auto | statecheck_verify::Engine::Explicit
+        )
+    {
+        bail!(
+            "--bitstate is a mode of the explicit engine; it cannot be combined with --engine {}",
+            engine.as_str()
+        );
+    }
     if a.workers.is_some() {
         if !matches!(
             engine,
@@ -367,6 +391,27 @@ fn options(a: &VerifyArgs, max_memory: Option<u64>, timeout: Option<Duration>) -
         },
         ..Options::default()
     }
+}
+
+/// The bitstate options of `--bitstate SIZE --bitstate-hashes K`: the array must leave room
+/// under the memory limit for the layers being expanded.
+fn bitstate(
+    size: &str,
+    hashes: u32,
+    max_memory: Option<u64>,
+) -> Result<statecheck_explicit::bitstate::Bitstate> {
+    let bytes = parse_size(size)?;
+    let most = statecheck_explicit::bitstate::MAX_HASHES;
+    if !(1..=most).contains(&hashes) {
+        bail!("--bitstate-hashes must be between 1 and {most}");
+    }
+    if let Some(m) = max_memory.filter(|&m| bytes >= m / 10 * 9) {
+        bail!(
+            "--bitstate {size} leaves no room under the memory limit of {} for the states being expanded: give a smaller array or a larger --max-memory",
+            statecheck_explicit::human_bytes(m)
+        );
+    }
+    Ok(statecheck_explicit::bitstate::Bitstate { bytes, hashes })
 }
 
 /// A positive number of seconds.

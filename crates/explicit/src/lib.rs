@@ -21,6 +21,7 @@
 //! exploration by a second search, with parent links, up to the depth of the deepest violation,
 //! within what is left of the time budget.
 
+pub mod bitstate;
 mod collapse;
 mod error;
 mod expand;
@@ -94,6 +95,11 @@ pub struct Options {
     /// 128 bits stored as the numbers of their halves' distinct values — the same states and
     /// results in less memory, at some cost in time.
     pub collapse: Collapse,
+    /// Bitstate hashing (`verify --bitstate SIZE`, [`bitstate`]): a fixed bit array instead of
+    /// the exact visited set, as SPIN's supertrace. Violations found are real; a search that
+    /// runs out of states proves nothing (its other verdicts are `unknown`, with the expected
+    /// omissions in [`Stats::bitstate`]). Collapse compression is then off.
+    pub bitstate: Option<bitstate::Bitstate>,
 }
 
 /// When the explicit engine compresses its visited set ([`Options::collapse`]).
@@ -156,6 +162,7 @@ impl Default for Options {
             stop: None,
             symmetry: None,
             collapse: Collapse::Auto,
+            bitstate: None,
         }
     }
 }
@@ -276,6 +283,9 @@ pub struct Stats {
     /// Under collapse compression: the states stored when it began (1: from the start; more
     /// when [`Collapse::Auto`] switched to it on the way).
     pub collapse_from: Option<u64>,
+    /// Under bitstate hashing ([`Options::bitstate`]): the array's statistics. `complete` is
+    /// then false even when the search ran out of states.
+    pub bitstate: Option<bitstate::BitstateStats>,
 }
 
 impl Stats {
@@ -619,6 +629,7 @@ fn run<K: Key>(
         timeout: opts.timeout,
         stop: opts.stop.clone(),
         collapse: opts.collapse,
+        bitstate: opts.bitstate,
     };
     let s = search::<K>(exp, limits, None, progress);
     stats.collapse_leaves = s.collapse_leaves.clone();
@@ -629,7 +640,9 @@ fn run<K: Key>(
     stats.time = s.elapsed;
     stats.peak_memory_bytes = s.peak_bytes;
     stats.table_bytes = s.table_bytes;
-    stats.complete = s.end == End::Complete;
+    // Under bitstate hashing, running out of states is not exhausting them (omissions).
+    stats.complete = s.end == End::Complete && s.bitstate.is_none();
+    stats.bitstate = s.bitstate.clone();
     stats.all_decided = s.end == End::AllDecided;
     if let End::Limit(l) = &s.end {
         stats.limit = Some(l.clone());
@@ -665,6 +678,11 @@ fn run<K: Key>(
                         Ok(c) => (Some(c), None),
                         Err(why) => (None, Some(why)),
                     };
+                    // After a bitstate search the rebuilt run may be shorter than the layer
+                    // the violation was found from (`trace::rebuild`).
+                    let depth = counterexample
+                        .as_ref()
+                        .map_or(layer + 1, |c| c.len() as u64);
                     PropResult {
                         name: spec.name.clone(),
                         kind: spec.kind,
@@ -673,7 +691,7 @@ fn run<K: Key>(
                         } else {
                             Verdict::Violated
                         },
-                        depth: layer + 1,
+                        depth,
                         counterexample,
                         error: f.error,
                         note,
@@ -682,6 +700,7 @@ fn run<K: Key>(
                 }
                 None => {
                     let verdict = match &s.end {
+                        End::Complete | End::Depth if s.bitstate.is_some() => Verdict::Unknown,
                         End::Complete => {
                             if reach {
                                 Verdict::Unreachable
@@ -692,6 +711,12 @@ fn run<K: Key>(
                         End::Depth => Verdict::Bounded,
                         End::AllDecided | End::Limit(_) => Verdict::Unknown,
                     };
+                    let note = s.bitstate.as_ref().filter(|_| verdict == Verdict::Unknown).map(|b| {
+                        format!(
+                            "bitstate search: not refuted in {} states to depth {}; not a proof ({} states omitted)",
+                            s.states, s.depth, bitstate::about(b.expected_omitted)
+                        )
+                    });
                     PropResult {
                         name: spec.name.clone(),
                         kind: spec.kind,
@@ -699,7 +724,7 @@ fn run<K: Key>(
                         depth: s.depth,
                         counterexample: None,
                         error: None,
-                        note: None,
+                        note,
                         loop_start: None,
                     }
                 }

@@ -7,6 +7,7 @@
 //! wins). Block, chunk and shard sizes depend only on the model, never on the thread count, so
 //! the states found, their order, and every result are the same on any number of threads.
 
+use crate::bitstate::{BitSet, BitShard, Bitstate, BitstateStats};
 use crate::collapse::Collapsed;
 use crate::expand::{Cand, ChunkOut, Expander, Found, StateCheck, StateFind};
 use crate::pack::Key;
@@ -28,6 +29,9 @@ pub(crate) struct Limits {
     /// When to store states collapse-compressed ([`crate::collapse`]; only states of more
     /// than two words are).
     pub collapse: Collapse,
+    /// Bitstate hashing instead of an exact set ([`crate::bitstate`]); collapse compression is
+    /// then off.
+    pub bitstate: Option<Bitstate>,
 }
 
 /// Why a search stopped.
@@ -67,6 +71,8 @@ pub(crate) struct Searched<K> {
     pub collapse_from: Option<u64>,
     /// With tracking: every layer.
     pub layers: Vec<Layer<K>>,
+    /// Under bitstate hashing: its statistics.
+    pub bitstate: Option<BitstateStats>,
     pub elapsed: Duration,
 }
 
@@ -131,10 +137,29 @@ fn insert_shard_collapsed<K: Key>(
     (kept, found.unwrap_or_default())
 }
 
-/// The visited set of a search: plain keys, or collapse-compressed.
+/// [`insert_shard`] for a bitstate search: the candidates taken for new are kept.
+#[inline(never)]
+fn insert_shard_bits<K: Key>(
+    shard: &mut BitShard,
+    hashes: u32,
+    mut fresh: Vec<Vec<Cand<K>>>,
+    mut checker: Option<&mut StateCheck<'_, '_>>,
+) -> Inserted<K> {
+    for bucket in &mut fresh {
+        match checker.as_deref_mut() {
+            Some(ch) => shard.insert_retain(hashes, bucket, |c| &c.key, |c| ch.check(c)),
+            None => shard.insert_retain(hashes, bucket, |c| &c.key, |_| {}),
+        }
+    }
+    let found = checker.map(|ch| std::mem::take(&mut ch.found));
+    (fresh, found.unwrap_or_default())
+}
+
+/// The visited set of a search: plain keys, collapse-compressed, or a bit array.
 enum Store<K> {
     Plain(Visited<K>),
     Collapsed(Box<Collapsed>),
+    Bits(Box<BitSet>),
 }
 
 impl<K: Key> Store<K> {
@@ -142,6 +167,7 @@ impl<K: Key> Store<K> {
         match self {
             Store::Plain(v) => v.bytes(),
             Store::Collapsed(c) => c.bytes(),
+            Store::Bits(b) => b.bytes(),
         }
     }
 }
@@ -167,7 +193,11 @@ pub(crate) fn search<K: Key>(
     };
     let wide = exp.packer.words > 2;
     let mut collapse_from = None;
-    let mut visited: Store<K> = if limits.collapse == Collapse::On && wide {
+    let mut visited: Store<K> = if let Some(b) = limits.bitstate.filter(|_| track.is_none()) {
+        let mut bits = BitSet::new(b);
+        bits.insert(&init);
+        Store::Bits(Box::new(bits))
+    } else if limits.collapse == Collapse::On && wide {
         let mut c = Collapsed::new(exp.packer.words);
         // An empty set has room for one state.
         let _ = c.insert(&init);
@@ -269,6 +299,18 @@ pub(crate) fn search<K: Key>(
                         })
                         .collect()
                 }
+                Store::Bits(b) => {
+                    let hashes = b.hashes;
+                    b.shards
+                        .par_iter_mut()
+                        .zip(checkers.par_iter_mut())
+                        .zip(per_shard)
+                        .map(|((shard, checker), fresh)| {
+                            checker.reset(pend);
+                            insert_shard_bits(shard, hashes, fresh, check_states.then_some(checker))
+                        })
+                        .collect()
+                }
             };
             // Per-state findings: the first in generation order over all shards.
             let mut first: Vec<Option<(u32, u32)>> = vec![None; n_props];
@@ -294,6 +336,9 @@ pub(crate) fn search<K: Key>(
                 }
             }
             let n_new: usize = new.iter().flat_map(|(f, _)| f).map(Vec::len).sum();
+            if let Store::Bits(b) = &mut visited {
+                b.note_block(n_new as u64);
+            }
             next.reserve(n_new);
             if tracking {
                 next_parents.reserve(n_new);
@@ -386,11 +431,15 @@ pub(crate) fn search<K: Key>(
         table_bytes: visited.bytes() as u64,
         peak_bytes: peak,
         collapse_leaves: match &visited {
-            Store::Plain(_) => None,
             Store::Collapsed(c) => Some(c.leaf_counts()),
+            _ => None,
         },
         collapse_from,
         layers,
+        bitstate: match &visited {
+            Store::Bits(b) => Some(b.stats(states)),
+            _ => None,
+        },
         elapsed: start.elapsed(),
     }
 }

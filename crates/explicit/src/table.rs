@@ -15,7 +15,7 @@
 use crate::pack::Key;
 
 /// Bits of a hash that choose its shard (the top ones).
-const SHARD_BITS: u32 = 6;
+pub(crate) const SHARD_BITS: u32 = 6;
 
 /// Number of shards (a fixed constant so that results do not depend on the thread count).
 /// 64 shards keep the table of each small enough to stay in a core's cache while a batch of
@@ -276,12 +276,12 @@ impl Bits {
 const IN_PLACE_BYTES: usize = 128 << 10;
 
 /// How far ahead [`Shard::insert_retain`] prefetches.
-const AHEAD: usize = 8;
+pub(crate) const AHEAD: usize = 8;
 
 /// Hint the processor to fetch `slots[i]` into the cache (nothing when out of range or not
 /// on x86-64).
 #[inline(always)]
-fn prefetch<K>(slots: &[K], i: usize) {
+pub(crate) fn prefetch<K>(slots: &[K], i: usize) {
     #[cfg(not(target_arch = "x86_64"))]
     let _ = (slots, i);
     #[cfg(target_arch = "x86_64")]

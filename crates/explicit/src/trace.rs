@@ -16,8 +16,9 @@ use crate::search::{search, End, Limits};
 use crate::Limit;
 use std::time::Duration;
 
-/// For each property: the input vectors of a shortest counterexample, when one was found and
-/// could be rebuilt within `max_memory` and the time `budget` (`Err` says why not). Properties
+/// For each property: the input vectors of a shortest counterexample through the state it was
+/// found from (as long as the layer it was found in, or shorter after a bitstate search),
+/// when one was found and could be rebuilt within `max_memory` and the time `budget` (`Err` says why not). Properties
 /// without a finding get `Err("")`.
 pub(crate) fn rebuild<K: Key>(
     exp: &Expander,
@@ -75,14 +76,24 @@ pub(crate) fn rebuild<K: Key>(
             if let Some(why) = &failed {
                 return Err(why.clone());
             }
-            let Some((states, _)) = s.layers.get(*layer as usize) else {
+            if s.layers.len() <= *layer as usize {
                 return Err("counterexample not rebuilt: layer missing (internal error)".into());
-            };
-            let Some(mut pos) = states.iter().position(|k| *k == f.parent) else {
+            }
+            // The parent's shortest depth: its layer in an exact search, or an earlier one
+            // in a bitstate search, which may have taken it for visited where it was first
+            // reached (`bitstate.rs`); the counterexample is then shorter.
+            let at =
+                s.layers[..=*layer as usize]
+                    .iter()
+                    .enumerate()
+                    .find_map(|(d, (states, _))| {
+                        Some((d, states.iter().position(|k| *k == f.parent)?))
+                    });
+            let Some((shortest, mut pos)) = at else {
                 return Err("counterexample not rebuilt: state missing (internal error)".into());
             };
             let mut inputs = vec![u128::from(f.input)];
-            for d in (1..=*layer as usize).rev() {
+            for d in (1..=shortest).rev() {
                 let (parent, input) = s.layers[d].1[pos];
                 inputs.push(u128::from(input));
                 pos = parent as usize;

@@ -149,6 +149,14 @@ pub fn stats_json(p: &Program, source: &Sources, s: &Stats) -> Value {
         "symmetry_note": s.symmetry_note,
         "collapse_leaves": s.collapse_leaves,
         "collapse_from": s.collapse_from,
+        "bitstate": s.bitstate.as_ref().map(|b| json!({
+            "bytes": b.bytes,
+            "hashes": b.hashes,
+            "set_bits": b.set_bits,
+            "fill": b.fill,
+            "bits_per_state": b.bits_per_state,
+            "expected_omitted": b.expected_omitted,
+        })),
     })
 }
 
@@ -338,7 +346,10 @@ pub fn tail(
                     );
                 }
             }
-            None if explicit => {
+            // Under bitstate hashing the statistics say once why the other rows are unknown.
+            None if explicit
+                && !(rep.stats.bitstate.is_some() && r.verdict == Verdict::Unknown) =>
+            {
                 if let Some(n) = &r.note {
                     let _ = writeln!(out, "\n{what} for `{}`: {n}", r.name);
                 }
@@ -413,6 +424,17 @@ fn stats_line(s: &Stats) -> String {
             l.get(1).copied().unwrap_or(0)
         ),
         (None, _) => native,
+    };
+    let native = match &s.bitstate {
+        Some(b) => format!(
+            "{native}\nbitstate hashing: {} bit array, {} bits per state, {:.2} % set, hash factor {:.1}, {} states omitted: the count is a lower bound of the reachable states, not an exhaustive search",
+            human_bytes(b.bytes),
+            b.hashes,
+            b.fill * 100.0,
+            b.bits_per_state,
+            statecheck_explicit::bitstate::about(b.expected_omitted)
+        ),
+        None => native,
     };
     format!(
         "{} states, {} transitions, depth {}, {:.2} s ({:.0} states/s), {:.1} bytes/state, peak {}, {} thread(s), {}-bit states, branching {}{after}{native}\n",
