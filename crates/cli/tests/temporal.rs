@@ -363,6 +363,99 @@ fn ltl_through_aiger_justice() {
     let _ = std::fs::remove_dir_all(&dir);
 }
 
+/// `export aiger --abc-liveness` writes the justice property in ABC's liveness convention
+/// (outputs `assume_fair_K` for the justice and fairness literals, a constant-false
+/// `assert_fair_0`): ABC's `l2s; pdr` reads it and gives the hand-derived verdicts of the
+/// systems above (`Free.reaches3` violated by the lasso n = 0 forever, `NoReset.stays3`
+/// proved, `FairInc.reaches3` violated by a fair lasso, `FairInc.gf_inc` proved: it is the
+/// fairness itself). Without `berkeley-abc` only the files are checked. A safety property (a
+/// built-in here) or an `.aag` file is refused.
+#[test]
+fn ltl_in_abc_liveness_convention() {
+    let dir = std::env::temp_dir().join(format!("statecheck-abc-form-{}", std::process::id()));
+    let _ = std::fs::create_dir_all(&dir);
+    let abc = Command::new("berkeley-abc").arg("-h").output().is_ok();
+    for (system, prop, holds) in [
+        ("Free", "reaches3", false),
+        ("NoReset", "stays3", true),
+        ("FairInc", "reaches3", false),
+        ("FairInc", "gf_inc", true),
+    ] {
+        let f = dir.join(format!("{system}_{prop}.aig"));
+        let out = Command::new(BIN)
+            .args(["export", "aiger", &model(), "--system", system])
+            .args(["--property", prop, "--abc-liveness", "-o"])
+            .arg(&f)
+            .output()
+            .expect("export runs");
+        assert_eq!(
+            out.status.code(),
+            Some(0),
+            "{}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        let bytes = std::fs::read(&f).expect("written");
+        let text = String::from_utf8_lossy(&bytes);
+        // `aig M I L O A`: the justice (and fairness) literals, then `assert_fair_0`.
+        let header = text.lines().next().unwrap_or("").to_string();
+        let o: Vec<&str> = header.split(' ').collect();
+        assert_eq!(o.len(), 6, "{header}");
+        let outputs = o[4].parse::<usize>().unwrap_or(0);
+        assert!(outputs >= 2, "{system}.{prop}: {header}");
+        let last = outputs - 1;
+        assert!(
+            text.contains(&format!("o{last} assert_fair_0\n")),
+            "{system}.{prop}"
+        );
+        assert!(text.contains("o0 assume_fair_0\n"), "{system}.{prop}");
+        if !abc {
+            continue;
+        }
+        let out = Command::new("timeout")
+            .args(["60", "berkeley-abc", "-c"])
+            .arg(format!(
+                "read {}; l2s; logic; undc; strash; zero; pdr",
+                f.display()
+            ))
+            .output()
+            .expect("abc runs");
+        let said = String::from_utf8_lossy(&out.stdout);
+        let verdict = if said.contains("Property proved") {
+            Some(true)
+        } else if said.contains("was asserted in frame") {
+            Some(false)
+        } else {
+            None
+        };
+        assert_eq!(verdict, Some(holds), "{system}.{prop}: {said}");
+    }
+    for (prop, file, says) in [
+        ("no_range_overflow", "x.aig", "safety property"),
+        ("reaches3", "x.aag", "binary AIGER"),
+    ] {
+        let out = Command::new(BIN)
+            .args([
+                "export",
+                "aiger",
+                &model(),
+                "--system",
+                "Free",
+                "--property",
+                prop,
+            ])
+            .args(["--abc-liveness", "-o"])
+            .arg(dir.join(file))
+            .output()
+            .expect("export runs");
+        assert_ne!(out.status.code(), Some(0), "{prop}");
+        assert!(
+            String::from_utf8_lossy(&out.stderr).contains(says),
+            "{prop}"
+        );
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
 /// The wiring of a system: its `instance`, `connect`, `order`, `assume` and `rate` lines (an
 /// `assume` with its continuation lines), in order, from `system NAME {` to its end.
 fn wiring(text: &str, system: &str) -> Vec<String> {

@@ -5,15 +5,14 @@
 //! Biere–Artho–Schuppan reduction and of IC3.
 //!
 //! This ABC version does not read AIGER's justice sections, so the test hands it the same
-//! circuit in ABC's own liveness convention: the justice literals as outputs named
-//! `assume_fair_K`, a constant-false `assert_fair_0` (a loop on which every `assume_fair`
-//! signal holds and the `assert_fair` one does not is a counterexample), and the invariant
-//! constraint folded into a latch "every step so far was allowed" that gates the signals.
+//! circuit in ABC's own liveness convention (`aiger::abc_liveness`, what `statecheck export
+//! aiger --abc-liveness` writes): the justice literals as outputs named `assume_fair_K`, a
+//! constant-false `assert_fair_0`, and the invariant constraint folded into a latch.
 //!
 //! Needs `berkeley-abc`; without it the test prints why and passes.
 
-use statecheck_symbolic::aig::{Aig, Lit};
-use statecheck_symbolic::aiger::{binary, parse};
+use statecheck_symbolic::aig::Aig;
+use statecheck_symbolic::aiger::{abc_liveness, binary, parse};
 use statecheck_symbolic::blast::blast;
 use statecheck_symbolic::check::Engine;
 use statecheck_symbolic::engine::Limits;
@@ -26,51 +25,6 @@ const MODELS: &[(&str, &[&str])] = &[(
     "tests/verify/temporal.sc",
     &["Free", "FairInc", "NoReset", "NoCompassion", "Deadlock"],
 )];
-
-/// Justice property 0 of `j` in ABC's liveness convention (module doc), as binary AIGER.
-fn abc_form(j: &Aig) -> Vec<u8> {
-    let mut g = j.clone();
-    let cons = g.constraints.clone();
-    let c = g.and_all(cons);
-    let ok = g.latch(Some(true), Some("ok".into()));
-    let ok_now = g.and(ok, c);
-    let oi = g.latches.len() - 1;
-    g.set_next(oi, ok_now);
-    g.constraints.clear();
-    let mut outs = Vec::new();
-    let mut names = Vec::new();
-    let signals: Vec<Lit> = j.justice[0].iter().chain(&j.fairness).copied().collect();
-    for (k, l) in signals.into_iter().enumerate() {
-        outs.push(g.and(l, ok_now));
-        names.push(Some(format!("assume_fair_{k}")));
-    }
-    outs.push(Lit::FALSE);
-    names.push(Some("assert_fair_0".to_string()));
-    g.bad = outs;
-    g.bad_names = vec![None; names.len()];
-    g.input_names = vec![None; g.inputs.len()];
-    g.latch_names = vec![None; g.latches.len()];
-    g.justice.clear();
-    g.justice_names.clear();
-    g.fairness.clear();
-    // This ABC reads binary AIGER only, and names outputs, not bad states: our writer puts
-    // bad outputs where AIGER 1.0 puts outputs, so only the header's counts change, and the
-    // symbols are appended after the AND gates.
-    let bytes = binary(&g, "");
-    let nl = bytes.iter().position(|&b| b == b'\n').expect("header");
-    let h: Vec<u64> = std::str::from_utf8(&bytes[..nl])
-        .expect("header")
-        .split(' ')
-        .skip(1)
-        .map(|x| x.parse().expect("number"))
-        .collect();
-    let mut out = format!("aig {} {} {} {} {}", h[0], h[1], h[2], h[5], h[4]).into_bytes();
-    out.extend_from_slice(&bytes[nl..]);
-    for (k, n) in names.iter().enumerate() {
-        out.extend_from_slice(format!("o{k} {}\n", n.as_deref().unwrap_or("")).as_bytes());
-    }
-    out
-}
 
 fn abc_verdict(file: &str) -> Option<bool> {
     let out = Command::new("timeout")
@@ -145,7 +99,8 @@ fn liveness_verdicts_equal_abc_l2s_pdr() {
                 let back = parse(&binary(&g, "")).expect("our binary AIGER reads back");
                 assert_eq!(back.justice.len(), 1);
                 let path = dir.join(format!("{}_{}.aig", sys.name, t.name));
-                std::fs::write(&path, abc_form(&back)).expect("write");
+                let abc_form = abc_liveness(&back, "").expect("a justice property");
+                std::fs::write(&path, abc_form).expect("write");
                 let Some(abc) = abc_verdict(&path.to_string_lossy()) else {
                     panic!("{file}: {}.{}: ABC gave no verdict", sys.name, t.name);
                 };

@@ -21,6 +21,12 @@ pub struct AigerArgs {
     /// The output file: `.aag` (ASCII) or `.aig` (binary).
     #[arg(short, long, value_name = "FILE")]
     output: String,
+    /// For a temporal property: write it in ABC's own liveness convention instead of AIGER
+    /// 1.9's justice section (outputs `assume_fair_K` and `assert_fair_0`, the constraint
+    /// folded into a latch; binary `.aig` only), for ABC builds that do not read justice
+    /// sections: `berkeley-abc -c "read F.aig; l2s; logic; undc; strash; zero; pdr"`.
+    #[arg(long)]
+    abc_liveness: bool,
 }
 
 /// Run the command; returns the exit code.
@@ -36,7 +42,16 @@ pub fn run(a: AigerArgs) -> Result<u8> {
     let sys = loaded.system(a.system.as_deref())?;
     let program = loaded.lower(sys)?;
     if program.temporal.iter().any(|t| t.name == a.property) {
+        if a.abc_liveness && !binary {
+            bail!("--abc-liveness writes binary AIGER: name the output file .aig");
+        }
         return justice(&a, &loaded.path, &program, binary);
+    }
+    if a.abc_liveness {
+        bail!(
+            "--abc-liveness is for temporal properties; `{}` is a safety property (export it without the flag)",
+            a.property
+        );
     }
     let (bl, idx) =
         statecheck_symbolic::check::problems(&program, std::slice::from_ref(&a.property))
@@ -101,7 +116,15 @@ fn justice(
          constraint = assumes hold, no run-time error, the automaton reads the position",
         program.name, a.property
     );
-    let bytes = if binary {
+    let bytes = if a.abc_liveness {
+        let comment = format!(
+            "{comment}\nin ABC's liveness convention: outputs assume_fair_K hold infinitely often and assert_fair_0 not on a counterexample; latch `ok`: every step so far met the constraint"
+        );
+        match statecheck_symbolic::aiger::abc_liveness(&aig, &comment) {
+            Some(b) => b,
+            None => bail!("`{}` has no justice property to write", a.property),
+        }
+    } else if binary {
         statecheck_symbolic::aiger::binary(&aig, &comment)
     } else {
         statecheck_symbolic::aiger::ascii(&aig, &comment)
