@@ -4,7 +4,7 @@
 //! independently of the checker's automaton) and must exit 4.
 
 use serde_json::Value;
-use std::process::Command;
+use std::process::{Command, Output};
 
 const BIN: &str = env!("CARGO_BIN_EXE_statecheck");
 
@@ -293,6 +293,35 @@ fn linear_drive_liveness() {
     let _ = std::fs::remove_dir_all(&dir);
 }
 
+/// `statecheck export aiger` of `system`'s property `prop` to `file`, with `extra` flags.
+fn export_aiger(system: &str, prop: &str, extra: &[&str], file: &std::path::Path) -> Output {
+    Command::new(BIN)
+        .args([
+            "export",
+            "aiger",
+            &model(),
+            "--system",
+            system,
+            "--property",
+            prop,
+        ])
+        .args(extra)
+        .arg("-o")
+        .arg(file)
+        .output()
+        .expect("export runs")
+}
+
+/// The exit code of `out`, with its standard error to show when it is not `want`.
+fn assert_code(out: &Output, want: i32) {
+    assert_eq!(
+        out.status.code(),
+        Some(want),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+}
+
 /// `export aiger` of an `ltl` property writes an AIGER 1.9 justice property; `verify FILE.aig`
 /// decides it with the hand-derived verdict (Free above); with compassion the export is
 /// refused (AIGER cannot state it).
@@ -308,26 +337,7 @@ fn ltl_through_aiger_justice() {
         ("FairInc", "reaches3", "violated", 1),
     ] {
         let f = dir.join(format!("{system}_{prop}.aig"));
-        let out = Command::new(BIN)
-            .args([
-                "export",
-                "aiger",
-                &model(),
-                "--system",
-                system,
-                "--property",
-                prop,
-                "-o",
-            ])
-            .arg(&f)
-            .output()
-            .expect("export runs");
-        assert_eq!(
-            out.status.code(),
-            Some(0),
-            "{}",
-            String::from_utf8_lossy(&out.stderr)
-        );
+        assert_code(&export_aiger(system, prop, &[], &f), 0);
         let head = std::fs::read(&f).expect("written");
         let header =
             String::from_utf8_lossy(&head[..head.iter().position(|&b| b == b'\n').unwrap_or(0)])
@@ -344,20 +354,7 @@ fn ltl_through_aiger_justice() {
         assert_eq!(v["results"][0]["verdict"], want, "{system}.{prop}: {v}");
         assert_eq!(out.status.code(), Some(code));
     }
-    let out = Command::new(BIN)
-        .args([
-            "export",
-            "aiger",
-            &model(),
-            "--system",
-            "Compassion",
-            "--property",
-            "past_one",
-            "-o",
-        ])
-        .arg(dir.join("c.aig"))
-        .output()
-        .expect("export runs");
+    let out = export_aiger("Compassion", "past_one", &[], &dir.join("c.aig"));
     assert_ne!(out.status.code(), Some(0));
     assert!(String::from_utf8_lossy(&out.stderr).contains("compassion"));
     let _ = std::fs::remove_dir_all(&dir);
@@ -382,18 +379,7 @@ fn ltl_in_abc_liveness_convention() {
         ("FairInc", "gf_inc", true),
     ] {
         let f = dir.join(format!("{system}_{prop}.aig"));
-        let out = Command::new(BIN)
-            .args(["export", "aiger", &model(), "--system", system])
-            .args(["--property", prop, "--abc-liveness", "-o"])
-            .arg(&f)
-            .output()
-            .expect("export runs");
-        assert_eq!(
-            out.status.code(),
-            Some(0),
-            "{}",
-            String::from_utf8_lossy(&out.stderr)
-        );
+        assert_code(&export_aiger(system, prop, &["--abc-liveness"], &f), 0);
         let bytes = std::fs::read(&f).expect("written");
         let text = String::from_utf8_lossy(&bytes);
         // `aig M I L O A`: the justice (and fairness) literals, then `assert_fair_0`.
@@ -433,20 +419,7 @@ fn ltl_in_abc_liveness_convention() {
         ("no_range_overflow", "x.aig", "safety property"),
         ("reaches3", "x.aag", "binary AIGER"),
     ] {
-        let out = Command::new(BIN)
-            .args([
-                "export",
-                "aiger",
-                &model(),
-                "--system",
-                "Free",
-                "--property",
-                prop,
-            ])
-            .args(["--abc-liveness", "-o"])
-            .arg(dir.join(file))
-            .output()
-            .expect("export runs");
+        let out = export_aiger("Free", prop, &["--abc-liveness"], &dir.join(file));
         assert_ne!(out.status.code(), Some(0), "{prop}");
         assert!(
             String::from_utf8_lossy(&out.stderr).contains(says),

@@ -22,7 +22,7 @@
 //! do not depend on the thread count.
 
 use crate::pack::{fmix, Key};
-use crate::table::{prefetch, shard_of, AHEAD, SHARDS, SHARD_BITS};
+use crate::table::{prefetch, shard_of, HashedSet, SHARDS, SHARD_BITS};
 
 /// The options of a bitstate search.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -73,16 +73,19 @@ pub(crate) struct BitShard {
     words: Vec<u64>,
     bits: u64,
     set: u64,
+    /// Bits set per state.
+    hashes: u32,
 }
 
 impl BitShard {
-    fn new(bits: u64) -> BitShard {
+    fn new(bits: u64, hashes: u32) -> BitShard {
         let bits = bits.max(64);
         BitShard {
             // Zeroed by the allocator (fresh pages): untouched parts cost no memory.
             words: vec![0; bits.div_ceil(64) as usize],
             bits,
             set: 0,
+            hashes,
         }
     }
 
@@ -98,12 +101,12 @@ impl BitShard {
         ((u128::from(x) * u128::from(self.bits)) >> 64) as u64
     }
 
-    /// Set the `k` bits of `hash`; true when one of them was clear (the state is new).
+    /// Set the bits of `hash`; true when one of them was clear (the state is new).
     #[inline]
-    fn insert(&mut self, hash: u64, k: u32) -> bool {
+    fn insert(&mut self, hash: u64) -> bool {
         let (mut a, b) = Self::probe(hash);
         let mut new = false;
-        for _ in 0..k {
+        for _ in 0..self.hashes {
             let bit = self.reduce(a);
             let (w, m) = ((bit / 64) as usize, 1u64 << (bit % 64));
             if self.words[w] & m == 0 {
@@ -122,37 +125,20 @@ impl BitShard {
         let bit = self.reduce(Self::probe(hash).0);
         prefetch(&self.words, (bit / 64) as usize);
     }
+}
 
-    /// [`crate::table::Shard::insert_retain`] for the bit array: insert the keys of `items` in
-    /// order and keep only the items taken for new, calling `on_new` on each.
-    pub fn insert_retain<K: Key, T>(
-        &mut self,
-        k: u32,
-        items: &mut Vec<T>,
-        key: impl Fn(&T) -> &K,
-        mut on_new: impl FnMut(&T),
-    ) {
-        let n = items.len();
-        let mut ring = [0u64; AHEAD];
-        for (h, it) in ring.iter_mut().zip(items.iter()) {
-            *h = key(it).hash64();
-            self.prefetch(*h);
-        }
-        let mut kept = 0;
-        for r in 0..n {
-            let h = ring[r % AHEAD];
-            if let Some(ahead) = items.get(r + AHEAD) {
-                let ha = key(ahead).hash64();
-                ring[r % AHEAD] = ha;
-                self.prefetch(ha);
-            }
-            if self.insert(h, k) {
-                on_new(&items[r]);
-                items.swap(kept, r);
-                kept += 1;
-            }
-        }
-        items.truncate(kept);
+impl<K: Key> HashedSet<K> for BitShard {
+    #[inline(always)]
+    fn prefetch_hash(&self, hash: u64) {
+        self.prefetch(hash);
+    }
+    #[inline(always)]
+    fn batch_fits(&self, _: usize) -> bool {
+        true
+    }
+    #[inline(always)]
+    fn insert_hashed(&mut self, _: &K, hash: u64, _: bool) -> bool {
+        self.insert(hash)
     }
 }
 
@@ -170,9 +156,12 @@ impl BitSet {
     /// An empty array of `b.bytes` bytes (at least 8 per shard).
     pub fn new(b: Bitstate) -> BitSet {
         let per_shard = (b.bytes.saturating_mul(8) / SHARDS as u64).max(64);
+        let hashes = b.hashes.clamp(1, MAX_HASHES);
         BitSet {
-            shards: (0..SHARDS).map(|_| BitShard::new(per_shard)).collect(),
-            hashes: b.hashes.clamp(1, MAX_HASHES),
+            shards: (0..SHARDS)
+                .map(|_| BitShard::new(per_shard, hashes))
+                .collect(),
+            hashes,
             omitted: 0.0,
         }
     }
@@ -180,8 +169,7 @@ impl BitSet {
     /// Insert one key (single-threaded use); true when it is taken for new.
     pub fn insert<K: Key>(&mut self, key: &K) -> bool {
         let h = key.hash64();
-        let k = self.hashes;
-        self.shards[shard_of(h)].insert(h, k)
+        self.shards[shard_of(h)].insert(h)
     }
 
     /// Bits of the array.

@@ -11,7 +11,7 @@ use crate::bitstate::{BitSet, BitShard, Bitstate, BitstateStats};
 use crate::collapse::Collapsed;
 use crate::expand::{Cand, ChunkOut, Expander, Found, StateCheck, StateFind};
 use crate::pack::Key;
-use crate::table::{Shard, Visited, SHARDS};
+use crate::table::{insert_retain, Shard, Visited, SHARDS};
 use crate::{Collapse, Limit, Progress};
 use rayon::prelude::*;
 use statecheck_ir::Machine;
@@ -141,14 +141,13 @@ fn insert_shard_collapsed<K: Key>(
 #[inline(never)]
 fn insert_shard_bits<K: Key>(
     shard: &mut BitShard,
-    hashes: u32,
     mut fresh: Vec<Vec<Cand<K>>>,
     mut checker: Option<&mut StateCheck<'_, '_>>,
 ) -> Inserted<K> {
     for bucket in &mut fresh {
         match checker.as_deref_mut() {
-            Some(ch) => shard.insert_retain(hashes, bucket, |c| &c.key, |c| ch.check(c)),
-            None => shard.insert_retain(hashes, bucket, |c| &c.key, |_| {}),
+            Some(ch) => insert_retain(shard, bucket, |c| &c.key, |c| ch.check(c)),
+            None => insert_retain(shard, bucket, |c| &c.key, |_| {}),
         }
     }
     let found = checker.map(|ch| std::mem::take(&mut ch.found));
@@ -299,18 +298,16 @@ pub(crate) fn search<K: Key>(
                         })
                         .collect()
                 }
-                Store::Bits(b) => {
-                    let hashes = b.hashes;
-                    b.shards
-                        .par_iter_mut()
-                        .zip(checkers.par_iter_mut())
-                        .zip(per_shard)
-                        .map(|((shard, checker), fresh)| {
-                            checker.reset(pend);
-                            insert_shard_bits(shard, hashes, fresh, check_states.then_some(checker))
-                        })
-                        .collect()
-                }
+                Store::Bits(b) => b
+                    .shards
+                    .par_iter_mut()
+                    .zip(checkers.par_iter_mut())
+                    .zip(per_shard)
+                    .map(|((shard, checker), fresh)| {
+                        checker.reset(pend);
+                        insert_shard_bits(shard, fresh, check_states.then_some(checker))
+                    })
+                    .collect(),
             };
             // Per-state findings: the first in generation order over all shards.
             let mut first: Vec<Option<(u32, u32)>> = vec![None; n_props];

@@ -61,42 +61,14 @@ impl<K: Key> Shard<K> {
     }
 
     /// Insert the keys of `items` in order and keep only the items whose key was new (in
-    /// their order), calling `on_new` on each of them as it is found. While inserting one
-    /// key, the slot of the key [`AHEAD`] places later is prefetched, so that the cache misses
-    /// of a large table overlap instead of following each other.
+    /// their order), calling `on_new` on each of them as it is found ([`insert_retain`]).
     pub fn insert_retain<T>(
         &mut self,
         items: &mut Vec<T>,
         key: impl Fn(&T) -> &K,
-        mut on_new: impl FnMut(&T),
+        on_new: impl FnMut(&T),
     ) {
-        let n = items.len();
-        // Hashes of the next `AHEAD` items, by position modulo `AHEAD`.
-        let mut ring = [0u64; AHEAD];
-        for (h, it) in ring.iter_mut().zip(items.iter()) {
-            *h = key(it).hash64();
-            prefetch(&self.slots, index(*h, self.slots.len()));
-        }
-        // When the whole batch fits under the load limit, no key can make the table grow.
-        let room = !self.over_load(n);
-        let mut kept = 0;
-        for r in 0..n {
-            let h = ring[r % AHEAD];
-            if let Some(ahead) = items.get(r + AHEAD) {
-                let ha = key(ahead).hash64();
-                ring[r % AHEAD] = ha;
-                prefetch(&self.slots, index(ha, self.slots.len()));
-            }
-            if !room && self.over_load(1) {
-                self.grow();
-            }
-            if self.place(key(&items[r]), h) {
-                on_new(&items[r]);
-                items.swap(kept, r);
-                kept += 1;
-            }
-        }
-        items.truncate(kept);
+        insert_retain(self, items, key, on_new);
     }
 
     /// True when `n` more keys would take the load past 0.8.
@@ -277,6 +249,72 @@ const IN_PLACE_BYTES: usize = 128 << 10;
 
 /// How far ahead [`Shard::insert_retain`] prefetches.
 pub(crate) const AHEAD: usize = 8;
+
+/// A set that stores keys by their hash: the exact [`Shard`], or a shard of a bitstate array
+/// (`bitstate.rs`). What [`insert_retain`] needs of it.
+pub(crate) trait HashedSet<K> {
+    /// Hint the processor to fetch the memory where `hash` goes.
+    fn prefetch_hash(&self, hash: u64);
+    /// True when `n` more keys fit without the set growing (none of them then checks).
+    fn batch_fits(&self, n: usize) -> bool;
+    /// Insert `key` with its `hash`, growing first if needed unless the batch `fits`; true
+    /// when it was new.
+    fn insert_hashed(&mut self, key: &K, hash: u64, fits: bool) -> bool;
+}
+
+impl<K: Key> HashedSet<K> for Shard<K> {
+    #[inline(always)]
+    fn prefetch_hash(&self, hash: u64) {
+        prefetch(&self.slots, index(hash, self.slots.len()));
+    }
+    #[inline(always)]
+    fn batch_fits(&self, n: usize) -> bool {
+        !self.over_load(n)
+    }
+    #[inline(always)]
+    fn insert_hashed(&mut self, key: &K, hash: u64, fits: bool) -> bool {
+        if !fits && self.over_load(1) {
+            self.grow();
+        }
+        self.place(key, hash)
+    }
+}
+
+/// Insert the keys of `items` into `set` in order and keep only the items whose key was new
+/// (in their order), calling `on_new` on each of them as it is found. While inserting one
+/// key, the place of the key [`AHEAD`] places later is prefetched, so that the cache misses
+/// of a large set overlap instead of following each other.
+#[inline(always)]
+pub(crate) fn insert_retain<K: Key, S: HashedSet<K>, T>(
+    set: &mut S,
+    items: &mut Vec<T>,
+    key: impl Fn(&T) -> &K,
+    mut on_new: impl FnMut(&T),
+) {
+    let n = items.len();
+    // Hashes of the next `AHEAD` items, by position modulo `AHEAD`.
+    let mut ring = [0u64; AHEAD];
+    for (h, it) in ring.iter_mut().zip(items.iter()) {
+        *h = key(it).hash64();
+        set.prefetch_hash(*h);
+    }
+    let fits = set.batch_fits(n);
+    let mut kept = 0;
+    for r in 0..n {
+        let h = ring[r % AHEAD];
+        if let Some(ahead) = items.get(r + AHEAD) {
+            let ha = key(ahead).hash64();
+            ring[r % AHEAD] = ha;
+            set.prefetch_hash(ha);
+        }
+        if set.insert_hashed(key(&items[r]), h, fits) {
+            on_new(&items[r]);
+            items.swap(kept, r);
+            kept += 1;
+        }
+    }
+    items.truncate(kept);
+}
 
 /// Hint the processor to fetch `slots[i]` into the cache (nothing when out of range or not
 /// on x86-64).
