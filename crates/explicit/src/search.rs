@@ -7,11 +7,11 @@
 //! wins). Block, chunk and shard sizes depend only on the model, never on the thread count, so
 //! the states found, their order, and every result are the same on any number of threads.
 
-use crate::bitstate::{BitSet, BitShard, Bitstate, BitstateStats};
+use crate::bitstate::{BitSet, Bitstate, BitstateStats};
 use crate::collapse::Collapsed;
 use crate::expand::{Cand, ChunkOut, Expander, Found, StateCheck, StateFind};
 use crate::pack::Key;
-use crate::table::{insert_retain, Shard, Visited, SHARDS};
+use crate::table::{insert_retain, HashedSet, Shard, Visited, SHARDS};
 use crate::{Collapse, Limit, Progress};
 use rayon::prelude::*;
 use statecheck_ir::Machine;
@@ -84,24 +84,25 @@ type Inserted<K> = (Vec<Vec<Cand<K>>>, Vec<StateFind>);
 /// new and checking the per-state properties on their candidates (with a checker).
 #[inline(always)]
 fn retain_new<K: Key, S: Key, T>(
-    shard: &mut Shard<S>,
+    shard: &mut impl HashedSet<S>,
     bucket: &mut Vec<T>,
     key: impl Fn(&T) -> &S,
     cand: impl Fn(&T) -> &Cand<K>,
     checker: Option<&mut StateCheck<'_, '_>>,
 ) {
     match checker {
-        Some(ch) => shard.insert_retain(bucket, key, |t| ch.check(cand(t))),
-        None => shard.insert_retain(bucket, key, |_| {}),
+        Some(ch) => insert_retain(shard, bucket, key, |t| ch.check(cand(t))),
+        None => insert_retain(shard, bucket, key, |_| {}),
     }
 }
 
-/// Insert a block's successors of one shard, in generation order; keep the new ones and check
-/// the per-state properties on them (with a checker). Called once per shard and block, so kept
-/// out of line: profiles then show the insertion phase on its own.
+/// Insert a block's successors of one shard (of the exact set or of a bitstate array), in
+/// generation order; keep the new ones and check the per-state properties on them (with a
+/// checker). Called once per shard and block, so kept out of line: profiles then show the
+/// insertion phase on its own.
 #[inline(never)]
 fn insert_shard<K: Key>(
-    shard: &mut Shard<K>,
+    shard: &mut impl HashedSet<K>,
     mut fresh: Vec<Vec<Cand<K>>>,
     mut checker: Option<&mut StateCheck<'_, '_>>,
 ) -> Inserted<K> {
@@ -137,21 +138,23 @@ fn insert_shard_collapsed<K: Key>(
     (kept, found.unwrap_or_default())
 }
 
-/// [`insert_shard`] for a bitstate search: the candidates taken for new are kept.
-#[inline(never)]
-fn insert_shard_bits<K: Key>(
-    shard: &mut BitShard,
-    mut fresh: Vec<Vec<Cand<K>>>,
-    mut checker: Option<&mut StateCheck<'_, '_>>,
-) -> Inserted<K> {
-    for bucket in &mut fresh {
-        match checker.as_deref_mut() {
-            Some(ch) => insert_retain(shard, bucket, |c| &c.key, |c| ch.check(c)),
-            None => insert_retain(shard, bucket, |c| &c.key, |_| {}),
-        }
-    }
-    let found = checker.map(|ch| std::mem::take(&mut ch.found));
-    (fresh, found.unwrap_or_default())
+/// Insert a block's successors into every shard in parallel ([`insert_shard`]).
+fn insert_block<K: Key, S: HashedSet<K> + Send>(
+    shards: &mut [S],
+    checkers: &mut [StateCheck<'_, '_>],
+    per_shard: Vec<Vec<Vec<Cand<K>>>>,
+    pend: &[bool],
+    check_states: bool,
+) -> Vec<Inserted<K>> {
+    shards
+        .par_iter_mut()
+        .zip(checkers.par_iter_mut())
+        .zip(per_shard)
+        .map(|((shard, checker), fresh)| {
+            checker.reset(pend);
+            insert_shard(shard, fresh, check_states.then_some(checker))
+        })
+        .collect()
 }
 
 /// The visited set of a search: plain keys, collapse-compressed, or a bit array.
@@ -265,16 +268,9 @@ pub(crate) fn search<K: Key>(
             let pend = &pending;
             let check_states = exp.checks_states(pend);
             let new: Vec<Inserted<K>> = match &mut visited {
-                Store::Plain(v) => v
-                    .shards
-                    .par_iter_mut()
-                    .zip(checkers.par_iter_mut())
-                    .zip(per_shard)
-                    .map(|((shard, checker), fresh)| {
-                        checker.reset(pend);
-                        insert_shard(shard, fresh, check_states.then_some(checker))
-                    })
-                    .collect(),
+                Store::Plain(v) => {
+                    insert_block(&mut v.shards, &mut checkers, per_shard, pend, check_states)
+                }
                 Store::Collapsed(c) => {
                     let Ok(roots) = c.roots_of(&per_shard) else {
                         // More distinct halves than 2^32: memory would have run out first.
@@ -298,16 +294,9 @@ pub(crate) fn search<K: Key>(
                         })
                         .collect()
                 }
-                Store::Bits(b) => b
-                    .shards
-                    .par_iter_mut()
-                    .zip(checkers.par_iter_mut())
-                    .zip(per_shard)
-                    .map(|((shard, checker), fresh)| {
-                        checker.reset(pend);
-                        insert_shard_bits(shard, fresh, check_states.then_some(checker))
-                    })
-                    .collect(),
+                Store::Bits(b) => {
+                    insert_block(&mut b.shards, &mut checkers, per_shard, pend, check_states)
+                }
             };
             // Per-state findings: the first in generation order over all shards.
             let mut first: Vec<Option<(u32, u32)>> = vec![None; n_props];
