@@ -89,10 +89,16 @@ impl BitShard {
         }
     }
 
-    /// The first position and the stride of `hash`'s bits.
+    /// The first position of `hash`'s bits, before reduction to the shard's size.
     #[inline(always)]
-    fn probe(hash: u64) -> (u64, u64) {
-        (hash << SHARD_BITS, fmix(hash ^ 0x9e37_79b9_7f4a_7c15) | 1)
+    fn first(hash: u64) -> u64 {
+        hash << SHARD_BITS
+    }
+
+    /// The stride between `hash`'s bits: an odd second hash of it.
+    #[inline(always)]
+    fn stride(hash: u64) -> u64 {
+        fmix(hash ^ 0x9e37_79b9_7f4a_7c15) | 1
     }
 
     /// Bit `x` reduced to the shard's size.
@@ -104,7 +110,7 @@ impl BitShard {
     /// Set the bits of `hash`; true when one of them was clear (the state is new).
     #[inline]
     fn insert(&mut self, hash: u64) -> bool {
-        let (mut a, b) = Self::probe(hash);
+        let (mut a, b) = (Self::first(hash), Self::stride(hash));
         let mut new = false;
         for _ in 0..self.hashes {
             let bit = self.reduce(a);
@@ -118,19 +124,14 @@ impl BitShard {
         }
         new
     }
-
-    /// Prefetch the word of `hash`'s first bit.
-    #[inline(always)]
-    fn prefetch(&self, hash: u64) {
-        let bit = self.reduce(Self::probe(hash).0);
-        prefetch(&self.words, (bit / 64) as usize);
-    }
 }
 
 impl<K: Key> HashedSet<K> for BitShard {
     #[inline(always)]
     fn prefetch_hash(&self, hash: u64) {
-        self.prefetch(hash);
+        // The word of the first bit (the stride's hash is left to the insertion).
+        let bit = self.reduce(Self::first(hash));
+        prefetch(&self.words, (bit / 64) as usize);
     }
     #[inline(always)]
     fn batch_fits(&self, _: usize) -> bool {

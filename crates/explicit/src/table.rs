@@ -9,7 +9,7 @@
 //!
 //! Shards let the threads insert in parallel (one shard per task); the shard of a key depends
 //! only on its hash, so the order in which new states are found does not depend on the number
-//! of threads. Keys are inserted in batches ([`Shard::insert_retain`]) that prefetch the slot of
+//! of threads. Keys are inserted in batches ([`insert_retain`]) that prefetch the slot of
 //! a key a few places ahead, so that the cache misses of a large table overlap.
 
 use crate::pack::Key;
@@ -58,17 +58,6 @@ impl<K: Key> Shard<K> {
             self.grow();
         }
         self.place(key, hash)
-    }
-
-    /// Insert the keys of `items` in order and keep only the items whose key was new (in
-    /// their order), calling `on_new` on each of them as it is found ([`insert_retain`]).
-    pub fn insert_retain<T>(
-        &mut self,
-        items: &mut Vec<T>,
-        key: impl Fn(&T) -> &K,
-        on_new: impl FnMut(&T),
-    ) {
-        insert_retain(self, items, key, on_new);
     }
 
     /// True when `n` more keys would take the load past 0.8.
@@ -247,8 +236,8 @@ impl Bits {
 /// which the allocator serves from memory it already holds, are copied (fewer instructions).
 const IN_PLACE_BYTES: usize = 128 << 10;
 
-/// How far ahead [`Shard::insert_retain`] prefetches.
-pub(crate) const AHEAD: usize = 8;
+/// How far ahead [`insert_retain`] prefetches.
+const AHEAD: usize = 8;
 
 /// A set that stores keys by their hash: the exact [`Shard`], or a shard of a bitstate array
 /// (`bitstate.rs`). What [`insert_retain`] needs of it.
@@ -405,13 +394,13 @@ mod tests {
         let mut s: Shard<u64> = Shard::default();
         let mut first: Vec<u64> = (1..=300).rev().collect();
         let mut seen = Vec::new();
-        s.insert_retain(&mut first, |k| k, |k| seen.push(*k));
+        insert_retain(&mut s, &mut first, |k| k, |k| seen.push(*k));
         assert_eq!(first, (1..=300).rev().collect::<Vec<_>>());
         assert_eq!(seen, first);
         // Duplicates within the batch and of earlier keys are dropped; the rest keep their order.
         let mut second: Vec<u64> = vec![5, 400, 7, 401, 400, 299, 402, 401];
         seen.clear();
-        s.insert_retain(&mut second, |k| k, |k| seen.push(*k));
+        insert_retain(&mut s, &mut second, |k| k, |k| seen.push(*k));
         assert_eq!(second, [400, 401, 402]);
         assert_eq!(seen, second);
         assert_eq!(s.len(), 303);

@@ -79,16 +79,13 @@ pub(crate) fn rebuild<K: Key>(
             if s.layers.len() <= *layer as usize {
                 return Err("counterexample not rebuilt: layer missing (internal error)".into());
             }
-            // The parent's shortest depth: its layer in an exact search, or an earlier one
-            // in a bitstate search, which may have taken it for visited where it was first
-            // reached (`bitstate.rs`); the counterexample is then shorter.
-            let at =
-                s.layers[..=*layer as usize]
-                    .iter()
-                    .enumerate()
-                    .find_map(|(d, (states, _))| {
-                        Some((d, states.iter().position(|k| *k == f.parent)?))
-                    });
+            // The parent's shortest depth. An exact search holds each state once, at its
+            // shortest depth, which is the layer it was found in: that layer is searched first.
+            // A bitstate search may have taken the parent for visited where it was first
+            // reached and found it later (`bitstate.rs`): then it is in an earlier layer, and
+            // the counterexample is shorter.
+            let find = |d: usize| Some((d, s.layers[d].0.iter().position(|k| *k == f.parent)?));
+            let at = find(*layer as usize).or_else(|| (0..*layer as usize).find_map(find));
             let Some((shortest, mut pos)) = at else {
                 return Err("counterexample not rebuilt: state missing (internal error)".into());
             };
