@@ -429,6 +429,79 @@ fn ltl_in_abc_liveness_convention() {
     let _ = std::fs::remove_dir_all(&dir);
 }
 
+/// `export aiger --abc-kcs`: one output `csLiveTarget_0` (false at the accepting ticks, the
+/// literals merged by `seen_K` latches); ABC's `kcs` proves the properties that hold (verdicts
+/// by hand in `tests/verify/temporal.sc`) and never the violated ones, however many k it tries
+/// in 3 s. Refused for a safety property, ASCII output, and with `--abc-liveness`.
+#[test]
+fn ltl_for_abc_kcs() {
+    let dir = std::env::temp_dir().join(format!("statecheck-abc-kcs-{}", std::process::id()));
+    let _ = std::fs::create_dir_all(&dir);
+    let abc = Command::new("berkeley-abc").arg("-h").output().is_ok();
+    for (system, prop, holds) in [
+        ("Free", "reaches3", false),
+        ("NoReset", "stays3", true),
+        ("FairInc", "reaches3", false),
+        ("FairInc", "gf_inc", true),
+    ] {
+        let f = dir.join(format!("{system}_{prop}.aig"));
+        assert_code(&export_aiger(system, prop, &["--abc-kcs"], &f), 0);
+        let bytes = std::fs::read(&f).expect("written");
+        let text = String::from_utf8_lossy(&bytes);
+        let header = text.lines().next().unwrap_or("").to_string();
+        assert_eq!(
+            header.split(' ').nth(4),
+            Some("1"),
+            "{system}.{prop}: {header}"
+        );
+        assert!(text.contains("o0 csLiveTarget_0\n"), "{system}.{prop}");
+        if !abc {
+            continue;
+        }
+        let out = Command::new("timeout")
+            .args(["3", "stdbuf", "-oL", "berkeley-abc", "-c"])
+            .arg(format!("read {}; kcs", f.display()))
+            .output()
+            .expect("abc runs");
+        let said = String::from_utf8_lossy(&out.stdout);
+        assert_eq!(
+            said.contains("Property proved"),
+            holds,
+            "{system}.{prop}: {said}"
+        );
+        if !holds {
+            assert!(
+                said.contains("Property DISPROVED"),
+                "{system}.{prop}: {said}"
+            );
+        }
+    }
+    for (prop, file, flags, says) in [
+        (
+            "no_range_overflow",
+            "x.aig",
+            &["--abc-kcs"][..],
+            "safety property",
+        ),
+        ("reaches3", "x.aag", &["--abc-kcs"][..], "binary AIGER"),
+        (
+            "reaches3",
+            "x.aig",
+            &["--abc-kcs", "--abc-liveness"][..],
+            "cannot be used with",
+        ),
+    ] {
+        let out = export_aiger("Free", prop, flags, &dir.join(file));
+        assert_ne!(out.status.code(), Some(0), "{prop}");
+        assert!(
+            String::from_utf8_lossy(&out.stderr).contains(says),
+            "{prop}: {}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
 /// The wiring of a system: its `instance`, `connect`, `order`, `assume` and `rate` lines (an
 /// `assume` with its continuation lines), in order, from `system NAME {` to its end.
 fn wiring(text: &str, system: &str) -> Vec<String> {

@@ -27,6 +27,12 @@ pub struct AigerArgs {
     /// sections: `berkeley-abc -c "read F.aig; l2s; logic; undc; strash; zero; pdr"`.
     #[arg(long)]
     abc_liveness: bool,
+    /// For a temporal property: write it for ABC's k-liveness command `kcs` (one output
+    /// `csLiveTarget_0`, false exactly at the accepting ticks, the justice and fairness
+    /// literals merged into one, the constraint folded into a latch; binary `.aig` only):
+    /// `berkeley-abc -c "read F.aig; kcs"` prints "Property proved" when the property holds.
+    #[arg(long, conflicts_with = "abc_liveness")]
+    abc_kcs: bool,
 }
 
 /// Run the command; returns the exit code.
@@ -42,14 +48,18 @@ pub fn run(a: AigerArgs) -> Result<u8> {
     let sys = loaded.system(a.system.as_deref())?;
     let program = loaded.lower(sys)?;
     if program.temporal.iter().any(|t| t.name == a.property) {
-        if a.abc_liveness && !binary {
-            bail!("--abc-liveness writes binary AIGER: name the output file .aig");
+        if (a.abc_liveness || a.abc_kcs) && !binary {
+            bail!(
+                "--{} writes binary AIGER: name the output file .aig",
+                abc_flag(&a)
+            );
         }
         return justice(&a, &loaded.path, &program, binary);
     }
-    if a.abc_liveness {
+    if a.abc_liveness || a.abc_kcs {
         bail!(
-            "--abc-liveness is for temporal properties; `{}` is a safety property (export it without the flag)",
+            "--{} is for temporal properties; `{}` is a safety property (export it without the flag)",
+            abc_flag(&a),
             a.property
         );
     }
@@ -124,6 +134,14 @@ fn justice(
             Some(b) => b,
             None => bail!("`{}` has no justice property to write", a.property),
         }
+    } else if a.abc_kcs {
+        let comment = format!(
+            "{comment}\nfor ABC's kcs: output csLiveTarget_0 is false exactly at the accepting ticks (the literals merged by latches seen_K); the property holds iff it is eventually always true; latch `ok`: every step so far met the constraint"
+        );
+        match statecheck_symbolic::aiger::abc_kcs(&aig, &comment) {
+            Some(b) => b,
+            None => bail!("`{}` has no justice property to write", a.property),
+        }
     } else if binary {
         statecheck_symbolic::aiger::binary(&aig, &comment)
     } else {
@@ -140,4 +158,13 @@ fn justice(
         aig.constraints.len()
     );
     Ok(0)
+}
+
+/// The ABC convention flag given, for messages.
+fn abc_flag(a: &AigerArgs) -> &'static str {
+    if a.abc_kcs {
+        "abc-kcs"
+    } else {
+        "abc-liveness"
+    }
 }

@@ -5,6 +5,6 @@ mod abc_live;
 mod read;
 mod write;
 
-pub use abc_live::abc_liveness;
+pub use abc_live::{abc_kcs, abc_liveness};
 pub use read::{parse, AigerError};
 pub use write::{ascii, binary};
