@@ -13,12 +13,20 @@
 #   MODEL=examples/fam/liveness/fam_live2.sc SYSTEM=FamLive2 sh crates/symbolic/benches/vs_abc_live.sh
 # Properties with compassion constraints cannot be written for ABC (AIGER has no compassion):
 # such a row says so. SERIAL=1 runs ABC after ours instead of beside it (2 cores assumed).
+# ABC_CMD=kcs runs ABC's k-liveness instead (`export aiger --abc-kcs`, then `kcs`): it only
+# proves, so its column reads proved or unknown.
 set -eu
 ROOT=$(cd "$(dirname "$0")/../../.." && pwd)
 TIMEOUT=${TIMEOUT:-300}
 ABC=${ABC:-berkeley-abc}
 MODEL=${MODEL:-examples/fam/liveness/fam_live.sc}
 SYSTEM=${SYSTEM:-FamLive}
+ABC_CMD=${ABC_CMD:-l2s}
+case "$ABC_CMD" in
+  l2s) FORM=--abc-liveness; SCRIPT="l2s; logic; undc; strash; zero; pdr" ;;
+  kcs) FORM=--abc-kcs; SCRIPT="kcs" ;;
+  *) echo "error: ABC_CMD is l2s or kcs"; exit 2 ;;
+esac
 PROPS=${PROPS:-"stall_procedure_completes recalibrates_after_failure reaches_target stall_procedure_completes_unless_permanent recalibrates_with_end_stops reaches_target_with_end_stops"}
 command -v "$ABC" >/dev/null || { echo "error: $ABC not found (apt-get install berkeley-abc)"; exit 2; }
 [ -n "${NO_BUILD:-}" ] || cargo build --release -q -p statecheck-cli --manifest-path "$ROOT/Cargo.toml"
@@ -31,7 +39,7 @@ now() { date +%s.%N; }
 printf "%-46s %-10s %-10s %9s %9s %7s\n" property ours abc ours_s abc_s ratio
 for prop in $PROPS; do
   aig=$WORK/$prop.aig
-  if ! "$BIN" export aiger "$ROOT/$MODEL" --system "$SYSTEM" --property "$prop" --abc-liveness \
+  if ! "$BIN" export aiger "$ROOT/$MODEL" --system "$SYSTEM" --property "$prop" "$FORM" \
        -o "$aig" 2> "$WORK/export.err"; then
     printf "%-46s %s\n" "$prop" "not written for ABC: $(tail -1 "$WORK/export.err")"
     continue
@@ -43,7 +51,7 @@ for prop in $PROPS; do
   ours_pid=$!
   [ -z "${SERIAL:-}" ] || wait "$ours_pid"
   t1=$(now)
-  timeout "$TIMEOUT" "$ABC" -c "read $aig; l2s; logic; undc; strash; zero; pdr" > "$WORK/abc.out" 2>&1 || true
+  timeout "$TIMEOUT" stdbuf -oL "$ABC" -c "read $aig; $SCRIPT" > "$WORK/abc.out" 2>&1 || true
   abc_t=$(echo "$(now) - $t1" | bc -l)
   wait "$ours_pid" || true
   ours_t=$(cat "$WORK/ours.t")
