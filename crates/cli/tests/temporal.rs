@@ -725,3 +725,31 @@ fn fam_liveness_lassos_replay() {
     }
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// An undecided liveness row says how far the SAT engine got: BMC on liveness-to-safety,
+/// stopped by the time limit on the FAM's `stall_procedure_completes_unless_permanent` (which
+/// holds: proved by k-liveness in 1000 s, docs/case-studies/temporal.md, so no lasso of any
+/// length exists), reports the lasso length it excluded.
+#[test]
+fn an_undecided_liveness_row_reports_the_lassos_excluded() {
+    let root = concat!(env!("CARGO_MANIFEST_DIR"), "/../..");
+    let live = format!("{root}/examples/fam/liveness/fam_live.sc");
+    let out = Command::new(BIN)
+        .args(["verify", &live, "--system", "FamLive", "--engine", "bmc"])
+        .args(["--property", "stall_procedure_completes_unless_permanent"])
+        .args(["--timeout", "3", "--json"])
+        .output()
+        .expect("verify runs");
+    let text = String::from_utf8_lossy(&out.stdout);
+    let v: serde_json::Value = serde_json::from_str(text.trim()).expect("one JSON document");
+    let row = &v["results"][0];
+    assert_eq!(row["verdict"], "unknown", "{text}");
+    let reason = row["reason"].as_str().unwrap_or("");
+    let ticks: usize = reason
+        .split("no lasso of at most ")
+        .nth(1)
+        .and_then(|t| t.split(' ').next())
+        .and_then(|n| n.parse().ok())
+        .unwrap_or(0);
+    assert!(ticks >= 1, "{reason}");
+}

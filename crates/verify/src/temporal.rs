@@ -319,10 +319,22 @@ fn race(
                 .map_or(0, |g| g.iter().filter(|x| x.is_none()).count())
         };
         let mut done = 0;
+        // At the deadline the engines stop too, and their last words (how far each got, or a
+        // verdict found at the last moment) arrive just after it: they are waited for a little.
+        let mut grace: Option<Instant> = None;
         while open(&got) > 0 && done < workers {
             let cancelled = opts.cancel.as_ref().is_some_and(|c| c.reason().is_some());
-            if cancelled || deadline.is_some_and(|d| Instant::now() >= d) {
+            if cancelled {
                 break;
+            }
+            if deadline.is_some_and(|d| Instant::now() >= d) {
+                let end = *grace.get_or_insert_with(|| {
+                    stop.store(true, Ordering::Relaxed);
+                    Instant::now() + DEADLINE_GRACE
+                });
+                if Instant::now() >= end {
+                    break;
+                }
             }
             let msg = match rx.recv_timeout(Duration::from_millis(50)) {
                 Ok(m) => m,
@@ -415,6 +427,9 @@ fn race(
 
 /// The engine name of a lasso found by [`hunt`] (`"engine"` in `verify --json`).
 const HUNT_ENGINE: &str = "sim";
+
+/// How long the race waits after the deadline for the engines' last reports.
+const DEADLINE_GRACE: Duration = Duration::from_millis(300);
 
 /// The lasso hunt of the simulator (`statecheck_sim::hunt`) on the LTL rows `order`, until
 /// each is decided (by it or another engine), the deadline or `stop`: each lasso it finds,

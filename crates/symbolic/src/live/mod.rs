@@ -148,15 +148,30 @@ pub fn check_justice(j: &Justice, method: Method, limits: &Limits) -> LiveOutcom
             if let LiveOutcome::Proved = persistence(j, &share(limits, 3, 4)) {
                 return LiveOutcome::Proved;
             }
-            klive_from(j, &mut k, limits, limits).unwrap_or_else(|| {
-                LiveOutcome::Unknown(limits.expired().unwrap_or_else(|| "time limit".into()))
-            })
+            match klive_from(j, &mut k, limits, limits) {
+                // What was reached, for the row's reason: every k below `k` was refuted.
+                Some(LiveOutcome::Unknown(why)) if k > 1 && !why.contains("k = ") => {
+                    LiveOutcome::Unknown(format!("{why}; k-liveness reached k = {k}"))
+                }
+                Some(outcome) => outcome,
+                None => LiveOutcome::Unknown(match limits.expired() {
+                    Some(why) if k > 1 => format!("{why}; k-liveness reached k = {k}"),
+                    Some(why) => why,
+                    None => "time limit".into(),
+                }),
+            }
         }
         Method::L2s(engine) => {
             let l = l2s(j);
             match run_reduced(engine, &l.aig, 0, &Reductions::new(1), limits) {
                 Outcome::Proved(_) => LiveOutcome::Proved,
                 Outcome::Bounded(k) => LiveOutcome::Bounded(k),
+                // A lasso of n ticks is a trace of n + 1 frames of the l2s circuit (the last
+                // closes the loop), so `cleared` frames exclude lassos of `cleared - 1` ticks.
+                Outcome::Unknown { why, cleared } if cleared > 1 => LiveOutcome::Unknown(format!(
+                    "{why}; no lasso of at most {} ticks",
+                    cleared - 1
+                )),
                 Outcome::Unknown { why, .. } => LiveOutcome::Unknown(why),
                 Outcome::Reached(mut trace) => {
                     // The last frame only closes the loop (its state is the saved one).
