@@ -360,6 +360,29 @@ fn ltl_through_aiger_justice() {
     let _ = std::fs::remove_dir_all(&dir);
 }
 
+/// The hand-derived verdicts both ABC conventions are tested on (systems of the model above):
+/// `Free.reaches3` violated by the lasso n = 0 forever, `NoReset.stays3` proved,
+/// `FairInc.reaches3` violated by a fair lasso, `FairInc.gf_inc` proved (it is the fairness).
+const ABC_CASES: [(&str, &str, bool); 4] = [
+    ("Free", "reaches3", false),
+    ("NoReset", "stays3", true),
+    ("FairInc", "reaches3", false),
+    ("FairInc", "gf_inc", true),
+];
+
+/// `system.prop` exported with the ABC convention `flag` into `dir`: the file and its text.
+fn export_for_abc(
+    dir: &std::path::Path,
+    system: &str,
+    prop: &str,
+    flag: &str,
+) -> (std::path::PathBuf, String) {
+    let f = dir.join(format!("{system}_{prop}.aig"));
+    assert_code(&export_aiger(system, prop, &[flag], &f), 0);
+    let bytes = std::fs::read(&f).expect("written");
+    (f, String::from_utf8_lossy(&bytes).into_owned())
+}
+
 /// `export aiger --abc-liveness` writes the justice property in ABC's liveness convention
 /// (outputs `assume_fair_K` for the justice and fairness literals, a constant-false
 /// `assert_fair_0`): ABC's `l2s; pdr` reads it and gives the hand-derived verdicts of the
@@ -372,16 +395,8 @@ fn ltl_in_abc_liveness_convention() {
     let dir = std::env::temp_dir().join(format!("statecheck-abc-form-{}", std::process::id()));
     let _ = std::fs::create_dir_all(&dir);
     let abc = Command::new("berkeley-abc").arg("-h").output().is_ok();
-    for (system, prop, holds) in [
-        ("Free", "reaches3", false),
-        ("NoReset", "stays3", true),
-        ("FairInc", "reaches3", false),
-        ("FairInc", "gf_inc", true),
-    ] {
-        let f = dir.join(format!("{system}_{prop}.aig"));
-        assert_code(&export_aiger(system, prop, &["--abc-liveness"], &f), 0);
-        let bytes = std::fs::read(&f).expect("written");
-        let text = String::from_utf8_lossy(&bytes);
+    for (system, prop, holds) in ABC_CASES {
+        let (f, text) = export_for_abc(&dir, system, prop, "--abc-liveness");
         // `aig M I L O A`: the justice (and fairness) literals, then `assert_fair_0`.
         let header = text.lines().next().unwrap_or("").to_string();
         let o: Vec<&str> = header.split(' ').collect();
@@ -438,16 +453,8 @@ fn ltl_for_abc_kcs() {
     let dir = std::env::temp_dir().join(format!("statecheck-abc-kcs-{}", std::process::id()));
     let _ = std::fs::create_dir_all(&dir);
     let abc = Command::new("berkeley-abc").arg("-h").output().is_ok();
-    for (system, prop, holds) in [
-        ("Free", "reaches3", false),
-        ("NoReset", "stays3", true),
-        ("FairInc", "reaches3", false),
-        ("FairInc", "gf_inc", true),
-    ] {
-        let f = dir.join(format!("{system}_{prop}.aig"));
-        assert_code(&export_aiger(system, prop, &["--abc-kcs"], &f), 0);
-        let bytes = std::fs::read(&f).expect("written");
-        let text = String::from_utf8_lossy(&bytes);
+    for (system, prop, holds) in ABC_CASES {
+        let (f, text) = export_for_abc(&dir, system, prop, "--abc-kcs");
         let header = text.lines().next().unwrap_or("").to_string();
         assert_eq!(
             header.split(' ').nth(4),
