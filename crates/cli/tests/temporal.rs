@@ -759,4 +759,20 @@ fn an_undecided_liveness_row_reports_the_lassos_excluded() {
         .and_then(|n| n.parse().ok())
         .unwrap_or(0);
     assert!(ticks >= 1, "{reason}");
+    // Under auto the row's reason lists each SAT method that reported, BMC's bound among them.
+    let out = Command::new(BIN)
+        .args(["verify", &live, "--system", "FamLive"])
+        .args(["--property", "stall_procedure_completes_unless_permanent"])
+        .args(["--timeout", "3", "--json"])
+        .output()
+        .expect("verify runs");
+    let text = String::from_utf8_lossy(&out.stdout);
+    let v: serde_json::Value = serde_json::from_str(text.trim()).expect("one JSON document");
+    let row = &v["results"][0];
+    assert_eq!(row["verdict"], "unknown", "{text}");
+    let reason = row["reason"].as_str().unwrap_or("");
+    assert!(
+        reason.contains("bmc: ") && reason.contains("no lasso of at most "),
+        "{reason}"
+    );
 }

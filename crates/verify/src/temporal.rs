@@ -381,8 +381,26 @@ fn race(
                     m.decided_at_s = at;
                     if s.result.verdict.is_definitive() && is_open(i) {
                         decide(i, s.result, m);
-                    } else if is_open(i) && (fallback[i].is_none() || !auto) {
-                        fallback[i] = Some((s.result, m));
+                    } else if is_open(i) {
+                        match &mut fallback[i] {
+                            // Under auto the row keeps the first report, and its reason says
+                            // how far every SAT method got ("bmc: …; klive: …").
+                            Some((_, kept)) if auto => {
+                                if let Some(why) = m.reason {
+                                    let said = format!("{engine}: {why}");
+                                    kept.reason = Some(match kept.reason.take() {
+                                        Some(before) => format!("{before}; {said}"),
+                                        None => said,
+                                    });
+                                }
+                            }
+                            slot => {
+                                if auto {
+                                    m.reason = m.reason.map(|why| format!("{engine}: {why}"));
+                                }
+                                *slot = Some((s.result, m));
+                            }
+                        }
                     }
                 }
                 Msg::Done => done += 1,
@@ -429,7 +447,7 @@ fn race(
 const HUNT_ENGINE: &str = "sim";
 
 /// How long the race waits after the deadline for the engines' last reports.
-const DEADLINE_GRACE: Duration = Duration::from_millis(300);
+const DEADLINE_GRACE: Duration = Duration::from_secs(1);
 
 /// The lasso hunt of the simulator (`statecheck_sim::hunt`) on the LTL rows `order`, until
 /// each is decided (by it or another engine), the deadline or `stop`: each lasso it finds,

@@ -151,11 +151,11 @@ pub fn check_justice(j: &Justice, method: Method, limits: &Limits) -> LiveOutcom
             match klive_from(j, &mut k, limits, limits) {
                 // What was reached, for the row's reason: every k below `k` was refuted.
                 Some(LiveOutcome::Unknown(why)) if k > 1 && !why.contains("k = ") => {
-                    LiveOutcome::Unknown(format!("{why}; k-liveness reached k = {k}"))
+                    LiveOutcome::Unknown(format!("{why}, k-liveness reached k = {k}"))
                 }
                 Some(outcome) => outcome,
                 None => LiveOutcome::Unknown(match limits.expired() {
-                    Some(why) if k > 1 => format!("{why}; k-liveness reached k = {k}"),
+                    Some(why) if k > 1 => format!("{why}, k-liveness reached k = {k}"),
                     Some(why) => why,
                     None => "time limit".into(),
                 }),
@@ -169,7 +169,7 @@ pub fn check_justice(j: &Justice, method: Method, limits: &Limits) -> LiveOutcom
                 // A lasso of n ticks is a trace of n + 1 frames of the l2s circuit (the last
                 // closes the loop), so `cleared` frames exclude lassos of `cleared - 1` ticks.
                 Outcome::Unknown { why, cleared } if cleared > 1 => LiveOutcome::Unknown(format!(
-                    "{why}; no lasso of at most {} ticks",
+                    "{why}, no lasso of at most {} ticks",
                     cleared - 1
                 )),
                 Outcome::Unknown { why, .. } => LiveOutcome::Unknown(why),
