@@ -148,17 +148,16 @@ pub fn check_justice(j: &Justice, method: Method, limits: &Limits) -> LiveOutcom
             if let LiveOutcome::Proved = persistence(j, &share(limits, 3, 4)) {
                 return LiveOutcome::Proved;
             }
-            match klive_from(j, &mut k, limits, limits) {
-                // What was reached, for the row's reason: every k below `k` was refuted.
-                Some(LiveOutcome::Unknown(why)) if k > 1 && !why.contains("k = ") => {
+            let outcome = klive_from(j, &mut k, limits, limits).unwrap_or_else(|| {
+                LiveOutcome::Unknown(limits.expired().unwrap_or_else(|| "time limit".into()))
+            });
+            match outcome {
+                // For the row's reason: every k below `k` was refuted (past MAX_K
+                // `klive_from`'s own reason says so).
+                LiveOutcome::Unknown(why) if (2..=MAX_K).contains(&k) => {
                     LiveOutcome::Unknown(format!("{why}, k-liveness reached k = {k}"))
                 }
-                Some(outcome) => outcome,
-                None => LiveOutcome::Unknown(match limits.expired() {
-                    Some(why) if k > 1 => format!("{why}, k-liveness reached k = {k}"),
-                    Some(why) => why,
-                    None => "time limit".into(),
-                }),
+                outcome => outcome,
             }
         }
         Method::L2s(engine) => {
